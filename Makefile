@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# prukit: BeagleBone PRU devices for Linux.  See README.md.
+#
+# The module list lives in Kbuild; this file drives kbuild and everything
+# else.  Entry points (stable names):
+#   make / make modules   modules against KDIR (default: the running kernel)
+#   make install          modules, PRU firmware, overlays, udev rule
+#   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse)
+#   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
+#   make overlays         device-tree overlays and bindings, validated
+#   make tools            host tools (prusim)
+#   make kunit            KUnit suites on UML with KASAN and lockdep
+#   make bench            simulator benchmarks
+#   make check            everything CI runs; ends with "N passed, N failed"
+
+PRUKIT_VERSION := $(shell sed -n 's/^PACKAGE_VERSION="\(.*\)"/\1/p' $(CURDIR)/dkms.conf)
+
+KDIR ?= /lib/modules/$(shell uname -r)/build
+DESTDIR ?=
+FIRMWARE_DIR ?= /lib/firmware
+UDEV_RULES_DIR ?= /etc/udev/rules.d
+
+OUT := $(CURDIR)/out
+SCRIPTS := $(CURDIR)/scripts
+
+.PHONY: all modules modules_install clean install firmware firmware_install \
+	overlays overlays_install udev_install kernels tools kunit checkpatch bench check version
+
+all: modules
+
+modules:
+	$(MAKE) -C $(KDIR) M=$(CURDIR) modules
+
+modules_install:
+	$(MAKE) -C $(KDIR) M=$(CURDIR) modules_install
+
+clean:
+	$(MAKE) -C $(KDIR) M=$(CURDIR) clean 2>/dev/null || true
+	rm -rf $(OUT)
+
+version:
+	@echo $(PRUKIT_VERSION)
+
+# pru-gcc from PATH, or bootstrapped into the cache on first use.
+firmware:
+	$(MAKE) -C firmware O=$(OUT)/firmware \
+		CROSS_COMPILE=$$($(SCRIPTS)/pru-toolchain.sh)/pru-
+
+firmware_install:
+	install -d $(DESTDIR)$(FIRMWARE_DIR)/prukit
+	install -m 0644 $(OUT)/firmware/*.elf $(DESTDIR)$(FIRMWARE_DIR)/prukit/
+
+overlays:
+	$(SCRIPTS)/overlays.sh
+
+overlays_install:
+	install -d $(DESTDIR)$(FIRMWARE_DIR)
+	install -m 0644 $(OUT)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
+
+udev_install:
+	install -D -m 0644 udev/60-prukit.rules $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
+
+install: modules_install firmware_install overlays_install udev_install
+
+kernels:
+	$(SCRIPTS)/checkpatch.sh
+	$(SCRIPTS)/kernels.sh $(KVERS)
+
+tools:
+	$(MAKE) -C tools/prusim
+
+kunit:
+	$(SCRIPTS)/kunit.sh
+
+checkpatch:
+	$(SCRIPTS)/checkpatch.sh
+
+bench: tools
+	tests/prusim/bench.sh
+
+check:
+	$(SCRIPTS)/check.sh
