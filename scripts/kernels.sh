@@ -33,12 +33,23 @@ while read -r series kver kdir _root; do
 	out=$PRUKIT_TOP/out/kernels/$kver
 	copy_sources "$out"
 	log=$out/build.log
+	kcflags=-Werror
+	extra=()
+	# A kernel without rpmsg (Debian's 5.10 armmp; TI's 5.10 has it) gets
+	# the kernel's own rpmsg modules built beside it, so that rpmsg users
+	# are still compiled and linked against the real interface.
+	if ! grep -q '^CONFIG_RPMSG=[ym]' "$kdir/.config"; then
+		kit=$("$PRUKIT_TOP/scripts/rpmsg-kit.sh" "$series" "$kdir" "$out-rpmsg-kit")
+		kcflags="$kcflags -DCONFIG_RPMSG_MODULE=1"
+		extra=(CONFIG_RPMSG=m KBUILD_EXTRA_SYMBOLS="$kit/Module.symvers")
+		echo "  ($kver has no CONFIG_RPMSG: rpmsg_core built from linux-source-$series)"
+	fi
 	kmake=(make -C "$kdir" M="$out" ARCH=arm CROSS_COMPILE=$cross CC=${cross}gcc
-	       W=1 KCFLAGS=-Werror -j"$(ncpus)")
-	if "${kmake[@]}" modules >"$log" 2>&1 && ! grep -q 'warning:' "$log"; then
+	       W=1 KCFLAGS="$kcflags" "${extra[@]}" -j"$(ncpus)")
+	if "${kmake[@]}" modules >"$log" 2>&1 && ! grep -qi 'warning' "$log"; then
 		pass "build $kver (W=1, -Werror)"
 	else
-		grep -E 'warning:|error:' "$log" | head -n 30
+		grep -iE 'warning|error' "$log" | head -n 30
 		fail "build $kver, see $log"
 		continue
 	fi

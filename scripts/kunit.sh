@@ -11,7 +11,7 @@ set -euo pipefail
 
 need_pkgs gcc make flex bison bc python3
 src=$("$PRUKIT_TOP/scripts/linux-source.sh" 6.1)
-build=$PRUKIT_CACHE/kunit-build-6.1
+build=$PRUKIT_CACHE/kunit-build-$(basename "$(dirname "$src")")
 
 ln -sfn "$PRUKIT_TOP" "$src/drivers/prukit"
 grep -q '^source "drivers/prukit/Kconfig"' "$src/drivers/Kconfig" ||

@@ -1,39 +1,41 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# linux-source.sh SERIES [full|dt]
+# linux-source.sh SERIES [full|dt|rpmsg]
 #
-# Print the path of an extracted Debian linux-source-SERIES tree (6.1, 6.12),
-# installing the package and extracting its tarball into $PRUKIT_CACHE first
-# if needed.  "full" (the default) extracts everything (KUnit, checkpatch);
-# "dt" only what device-tree work needs (dts, dt-bindings, scripts/dtc,
-# binding documents), which is much quicker.
+# Print the path of an extracted Debian linux-source-SERIES tree (5.10, 6.1,
+# 6.12), fetching the package through the private apt configuration
+# (scripts/papt.sh) and extracting it into $PRUKIT_CACHE first if needed.
+#   full   everything (KUnit, checkpatch) - the default
+#   dt     what device-tree work needs: dts, dt-bindings, scripts/dtc, bindings
+#   rpmsg  drivers/rpmsg only (the rpmsg modules for kernels built without them)
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/papt.sh"
 
-series=${1:?usage: linux-source.sh SERIES [full|dt]}
+series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg]}
 what=${2:-full}
+case $what in
+full) paths=() ;;
+dt) paths=(arch/arm/boot/dts include/dt-bindings scripts/dtc Documentation/devicetree/bindings) ;;
+rpmsg) paths=(drivers/rpmsg) ;;
+*) die "unknown part '$what'" ;;
+esac
 
-need_pkgs "linux-source-$series" xz-utils
-tarball=$(ls /usr/src/linux-source-"$series".tar.xz 2>/dev/null) ||
-	die "linux-source-$series did not install /usr/src/linux-source-$series.tar.xz"
-pkgver=$(dpkg-query -W -f='${Version}' "linux-source-$series")
+papt_init
+pkg=linux-source-$series
+pkgver=$(pcache show --no-all-versions "$pkg" 2>/dev/null | sed -n 's/^Version: //p' | head -n 1)
+[ -n "$pkgver" ] || die "no package $pkg in bullseye, bookworm or bookworm-backports"
 dest=$PRUKIT_CACHE/linux-source-$pkgver-$what
 top=$dest/linux-source-$series
 
 if [ ! -e "$dest/.complete" ]; then
-	msg "extracting linux-source-$series ($pkgver, $what) into $dest"
+	msg "extracting $pkg ($pkgver, $what) into $dest"
 	rm -rf "$dest"
-	mkdir -p "$dest"
-	if [ "$what" = dt ]; then
-		tar -C "$dest" -xJf "$tarball" --wildcards \
-			"linux-source-$series/arch/arm/boot/dts/*" \
-			"linux-source-$series/include/dt-bindings/*" \
-			"linux-source-$series/scripts/dtc/*" \
-			"linux-source-$series/Documentation/devicetree/bindings/*"
-	else
-		tar -C "$dest" -xJf "$tarball"
-	fi
+	papt_fetch "$dest/deb" "$pkg"
+	tarball=$(ls "$dest"/deb/usr/src/linux-source-"$series".tar.*)
+	tar -C "$dest" -xf "$tarball" "${paths[@]/#/linux-source-$series/}"
+	rm -rf "$dest/deb"
 	touch "$dest/.complete"
 fi
 echo "$top"
