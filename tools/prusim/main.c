@@ -1,0 +1,549 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * prusim - run PRU firmware on the simulated AM335x PRU-ICSS.
+ *
+ * See Documentation/prusim.rst for the options, the stimulus file format and
+ * the JSON output.
+ */
+
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "prusim.h"
+#include "stimulus.h"
+#include "vcd.h"
+
+#define ARRAY_SIZE(a)		(sizeof(a) / sizeof((a)[0]))
+#define DDR_BASE		0x80000000u
+#define DEFAULT_MAX_CYCLES	1000000000ull
+#define MAX_EVENTS		64
+#define MAX_HOST_IRQS		4096
+
+#define EXIT_USAGE		1
+#define EXIT_NO_HALT		2
+#define EXIT_STOPPED		3
+
+/**
+ * struct kick - a system event raised from outside at a given cycle
+ * @cycle: when
+ * @event: system event number
+ */
+struct kick {
+	uint64_t cycle;
+	unsigned int event;
+};
+
+/**
+ * struct host_irq - a recorded change of a host interrupt line (2..9)
+ * @cycle: when
+ * @host: line
+ * @level: new level
+ */
+struct host_irq {
+	uint64_t cycle;
+	unsigned int host;
+	bool level;
+};
+
+/**
+ * struct tool - everything the callbacks need
+ * @sim: the simulator (large: heap allocated)
+ * @input: stimulus of each input port (R31 of each core, GPIO DATAIN)
+ * @has_input: a stimulus file was given for the port
+ * @vcd: pin changes, when --vcd is given
+ * @vcd_path: VCD output file
+ * @ddr: host memory behind OCP addresses from 0x80000000
+ * @ddr_size: its size
+ * @irqs: host interrupt changes
+ * @nirqs: number of @irqs
+ * @pin_changes: number of pin changes
+ * @trace: print every instruction
+ * @error: a callback failed (out of memory)
+ */
+struct tool {
+	struct prusim *sim;
+	struct stimulus input[PRUSIM_NUM_PORTS];
+	bool has_input[PRUSIM_NUM_PORTS];
+	struct vcd vcd;
+	const char *vcd_path;
+	uint8_t *ddr;
+	uint64_t ddr_size;
+	struct host_irq irqs[MAX_HOST_IRQS];
+	unsigned int nirqs;
+	uint64_t pin_changes;
+	bool trace;
+	bool error;
+};
+
+static void on_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
+{
+	struct tool *t = ctx;
+
+	t->pin_changes++;
+	if (t->vcd_path && vcd_record(&t->vcd, cycle, pin, level))
+		t->error = true;
+}
+
+static u32 on_input(void *ctx, unsigned int port, u64 cycle, u64 *next)
+{
+	struct tool *t = ctx;
+
+	if (port < PRUSIM_NUM_PORTS && t->has_input[port])
+		return stimulus_value(&t->input[port], cycle, next);
+	*next = PRUSIM_NEVER;
+	return 0;
+}
+
+static void on_host_irq(void *ctx, u64 cycle, unsigned int host, bool level)
+{
+	struct tool *t = ctx;
+
+	if (t->nirqs < MAX_HOST_IRQS)
+		t->irqs[t->nirqs++] = (struct host_irq){ cycle, host, level };
+}
+
+static uint8_t *ddr_at(struct tool *t, u32 addr, unsigned int len)
+{
+	u64 off = (u64)addr - DDR_BASE;
+
+	if (addr < DDR_BASE || off > t->ddr_size || len > t->ddr_size - off)
+		return NULL;
+	return t->ddr + off;
+}
+
+static int on_ocp_read(void *ctx, u32 addr, void *buf, unsigned int len)
+{
+	uint8_t *p = ddr_at(ctx, addr, len);
+
+	if (!p)
+		return -EFAULT;
+	memcpy(buf, p, len);
+	return 0;
+}
+
+static int on_ocp_write(void *ctx, u32 addr, const void *buf, unsigned int len)
+{
+	uint8_t *p = ddr_at(ctx, addr, len);
+
+	if (!p)
+		return -EFAULT;
+	memcpy(p, buf, len);
+	return 0;
+}
+
+static void on_trace(void __always_unused *ctx, u64 cycle, unsigned int core, u32 pc, u32 insn)
+{
+	char text[64];
+
+	prusim_disasm(text, sizeof(text), insn, pc * 4);
+	printf("%llu pru%u %04x: %08x  %s\n", (unsigned long long)cycle, core, pc * 4, insn, text);
+}
+
+static void *read_file(const char *path, size_t *size)
+{
+	FILE *f = fopen(path, "rb");
+	void *buf = NULL;
+	long n = -1;
+
+	if (!f)
+		return NULL;
+	if (!fseek(f, 0, SEEK_END))
+		n = ftell(f);
+	if (n >= 0 && !fseek(f, 0, SEEK_SET)) {
+		buf = malloc(n ? n : 1);
+		if (buf && fread(buf, 1, n, f) != (size_t)n) {
+			free(buf);
+			buf = NULL;
+		}
+		*size = n;
+	}
+	fclose(f);
+	return buf;
+}
+
+/* Print the executable sections like "pru-objdump -d" (without symbols). */
+static int disasm_elf(const char *path)
+{
+	size_t size = 0, i;
+	uint8_t *img = read_file(path, &size);
+	uint32_t shoff, shentsize, shnum;
+	char text[64];
+
+	if (!img || size < 52 || memcmp(img, "\177ELF", 4) || img[4] != 1 || img[5] != 1) {
+		fprintf(stderr, "prusim: %s: not a 32-bit little-endian ELF file\n", path);
+		free(img);
+		return EXIT_USAGE;
+	}
+	shoff = prusim_get_le32(img + 32);
+	shentsize = prusim_get_le16(img + 46);
+	shnum = prusim_get_le16(img + 48);
+	for (i = 0; i < shnum; i++) {
+		const uint8_t *sh = img + shoff + i * shentsize;
+		uint32_t addr, off, len, w;
+
+		if (shoff + (i + 1) * shentsize > size || shentsize < 40)
+			break;
+		/* SHT_PROGBITS with SHF_EXECINSTR */
+		if (prusim_get_le32(sh + 4) != 1 || !(prusim_get_le32(sh + 8) & 4))
+			continue;
+		addr = prusim_get_le32(sh + 12);
+		off = prusim_get_le32(sh + 16);
+		len = prusim_get_le32(sh + 20);
+		for (w = 0; w + 4 <= len && off + w + 4 <= size; w += 4) {
+			uint32_t insn = prusim_get_le32(img + off + w);
+
+			prusim_disasm(text, sizeof(text), insn, addr + w);
+			printf("%8x:\t%08x \t%s\n", addr + w, insn, text);
+		}
+	}
+	free(img);
+	return 0;
+}
+
+static const char *const state_names[] = {
+	[PRUSIM_DISABLED] = "disabled",
+	[PRUSIM_RUNNING] = "running",
+	[PRUSIM_SLEEPING] = "sleeping",
+	[PRUSIM_HALTED] = "halted",
+	[PRUSIM_STOPPED] = "stopped",
+};
+
+static void json_string(const char *s)
+{
+	putchar('"');
+	for (; *s; s++) {
+		if (*s == '"' || *s == '\\')
+			printf("\\%c", *s);
+		else if ((unsigned char)*s < 0x20)
+			printf("\\u%04x", *s);
+		else
+			putchar(*s);
+	}
+	putchar('"');
+}
+
+static void print_json(struct tool *t)
+{
+	struct prusim *s = t->sim;
+	struct prusim_status st;
+	unsigned int i, r;
+
+	printf("{\"cycles\": %llu, \"pin_changes\": %llu, \"pru\": [",
+	       (unsigned long long)s->now, (unsigned long long)t->pin_changes);
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		prusim_get_status(s, i, &st);
+		printf("%s{\"state\": \"%s\", \"halted\": %s, \"reason\": ", i ? ", " : "",
+		       state_names[st.state], st.state == PRUSIM_HALTED ? "true" : "false");
+		json_string(st.reason);
+		printf(", \"pc\": %u, \"instructions\": %llu, \"stalls\": %llu", st.pc,
+		       (unsigned long long)st.insns, (unsigned long long)st.stalls);
+		printf(", \"cycle_counter\": %u, \"stall_counter\": %u, \"regs\": [",
+		       st.cycle_cnt, st.stall_cnt);
+		for (r = 0; r < 32; r++)
+			printf("%s%u", r ? ", " : "", st.regs[r]);
+		printf("]}");
+	}
+	printf("], \"intc\": {\"raw\": %llu, \"enabled\": %llu, \"pending\": %u}",
+	       (unsigned long long)s->intc.raw, (unsigned long long)s->intc.enabled,
+	       s->intc.pending);
+	printf(", \"host_irq\": [");
+	for (i = 0; i < t->nirqs; i++)
+		printf("%s{\"cycle\": %llu, \"host\": %u, \"level\": %d}", i ? ", " : "",
+		       (unsigned long long)t->irqs[i].cycle, t->irqs[i].host, t->irqs[i].level);
+	printf("]}\n");
+}
+
+static int parse_size(const char *arg, uint64_t *v)
+{
+	char *end;
+
+	errno = 0;
+	*v = strtoull(arg, &end, 0);
+	if (errno || end == arg)
+		return -EINVAL;
+	if (*end == 'K' || *end == 'k')
+		*v <<= 10, end++;
+	else if (*end == 'M' || *end == 'm')
+		*v <<= 20, end++;
+	return *end ? -EINVAL : 0;
+}
+
+static const char *const lat_names[PRUSIM_NUM_LAT] = {
+	"dram", "shared", "intc", "ctrl", "cfg", "iep",
+	"gpio0", "gpio", "ocmc", "ddr", "prcm", "ocp",
+};
+
+/* -C NAME=VALUE: change one timing parameter */
+static int set_config(struct prusim_config *cfg, const char *arg)
+{
+	static const struct {
+		const char *name;
+		size_t offset;
+	} fields[] = {
+		{ "read_word_cycles", offsetof(struct prusim_config, read_word_cycles) },
+		{ "write_cycles", offsetof(struct prusim_config, write_cycles) },
+		{ "write_word_cycles", offsetof(struct prusim_config, write_word_cycles) },
+		{ "gpio_write_latency", offsetof(struct prusim_config, gpio_write_latency) },
+		{ "gpio_write_interval", offsetof(struct prusim_config, gpio_write_interval) },
+		{ "r31_sync_delay", offsetof(struct prusim_config, r31_sync_delay) },
+		{ "event_latency", offsetof(struct prusim_config, event_latency) },
+	};
+	const char *eq = strchr(arg, '=');
+	uint64_t v;
+	size_t i, n;
+
+	if (!eq || parse_size(eq + 1, &v) || v > UINT16_MAX)
+		return -EINVAL;
+	n = eq - arg;
+	for (i = 0; i < PRUSIM_NUM_LAT; i++) {
+		if (strlen(lat_names[i]) == n && !strncmp(arg, lat_names[i], n)) {
+			cfg->read_latency[i] = v;
+			return 0;
+		}
+	}
+	for (i = 0; i < ARRAY_SIZE(fields); i++) {
+		if (strlen(fields[i].name) == n && !strncmp(arg, fields[i].name, n)) {
+			*(u16 *)((char *)cfg + fields[i].offset) = v;
+			return 0;
+		}
+	}
+	return -EINVAL;
+}
+
+static int parse_kick(const char *arg, struct kick *k)
+{
+	unsigned long long cycle;
+	unsigned int event;
+	char tail;
+
+	if (sscanf(arg, "%llu:%u%c", &cycle, &event, &tail) != 2 || event >= PRUSIM_NUM_EVENTS)
+		return -EINVAL;
+	k->cycle = cycle;
+	k->event = event;
+	return 0;
+}
+
+/* --gpio-in BANK:FILE: the input port of the bank; *arg is left at FILE */
+static int parse_gpio_port(char **arg)
+{
+	char *p = *arg;
+
+	if (p[0] < '0' || p[0] >= '0' + PRUSIM_GPIO_BANKS || p[1] != ':')
+		return -1;
+	*arg = p + 2;
+	return PRUSIM_PORT_GPIO(p[0] - '0');
+}
+
+static int load_firmware(struct prusim *s, unsigned int core, const char *path)
+{
+	struct prusim_elf_info info;
+	size_t size = 0;
+	void *img = read_file(path, &size);
+	int ret;
+
+	if (!img) {
+		fprintf(stderr, "prusim: %s: %s\n", path, strerror(errno));
+		return -1;
+	}
+	ret = prusim_load_elf(s, core, img, size, &info);
+	free(img);
+	if (ret) {
+		fprintf(stderr, "prusim: %s: %s\n", path, info.err);
+		return -1;
+	}
+	prusim_core_enable(s, core, true);
+	return 0;
+}
+
+static void print_usage(void)
+{
+	fprintf(stderr,
+		"usage: prusim [--pru0 FW.elf] [--pru1 FW.elf] [--max-cycles N] [--until-halt]\n"
+		"              [--vcd FILE] [--r31-0 FILE] [--r31-1 FILE] [--gpio-in BANK:FILE]\n"
+		"              [--ddr SIZE] [--event CYCLE:EVENT]... [-C NAME=VALUE]...\n"
+		"              [--no-skip] [--trace] [--json]\n");
+}
+
+/* Run to @end, raising the scheduled events on the way. */
+static void run(struct tool *t, const struct kick *kicks, unsigned int nkicks, uint64_t end)
+{
+	struct prusim *s = t->sim;
+	unsigned int k;
+
+	for (k = 0; k <= nkicks; k++) {
+		uint64_t until = k < nkicks && kicks[k].cycle < end ? kicks[k].cycle : end;
+
+		if (s->now < until)
+			prusim_run(s, until - s->now);
+		if (s->stop_run || k == nkicks || kicks[k].cycle >= end)
+			return;
+		/*
+		 * prusim_run() returns early when nothing is scheduled; the clock
+		 * may then move to the kick without anything else happening.
+		 */
+		if (s->now < kicks[k].cycle)
+			s->now = kicks[k].cycle;
+		prusim_raise_event(s, kicks[k].event);
+	}
+}
+
+static int compare_kicks(const void *a, const void *b)
+{
+	const struct kick *x = a, *y = b;
+
+	return x->cycle < y->cycle ? -1 : x->cycle > y->cycle;
+}
+
+int main(int argc, char **argv)
+{
+	static const struct option opts[] = {
+		{ "pru0", required_argument, NULL, '0' },
+		{ "pru1", required_argument, NULL, '1' },
+		{ "max-cycles", required_argument, NULL, 'm' },
+		{ "until-halt", no_argument, NULL, 'u' },
+		{ "vcd", required_argument, NULL, 'v' },
+		{ "r31-0", required_argument, NULL, 'a' },
+		{ "r31-1", required_argument, NULL, 'b' },
+		{ "gpio-in", required_argument, NULL, 'g' },
+		{ "ddr", required_argument, NULL, 'd' },
+		{ "event", required_argument, NULL, 'e' },
+		{ "no-skip", no_argument, NULL, 'n' },
+		{ "trace", no_argument, NULL, 't' },
+		{ "json", no_argument, NULL, 'j' },
+		{ "disasm", required_argument, NULL, 'D' },
+		{ NULL, 0, NULL, 0 },
+	};
+	static struct tool t;
+	const struct prusim_ops ops = {
+		.pin = on_pin,
+		.input = on_input,
+		.host_irq = on_host_irq,
+		.ocp_read = on_ocp_read,
+		.ocp_write = on_ocp_write,
+	};
+	const char *fw[PRUSIM_NUM_CORES] = { NULL, NULL };
+	struct kick kicks[MAX_EVENTS];
+	unsigned int nkicks = 0, i;
+	uint64_t max_cycles = DEFAULT_MAX_CYCLES;
+	bool until_halt = false, json = false;
+	struct prusim_config cfg;
+	struct prusim_ops run_ops = ops;
+	char err[256];
+	int opt, port, ret = 0;
+
+	prusim_default_config(&cfg);
+	while ((opt = getopt_long(argc, argv, "C:", opts, NULL)) != -1) {
+		switch (opt) {
+		case '0':
+		case '1':
+			fw[opt - '0'] = optarg;
+			break;
+		case 'm':
+			if (parse_size(optarg, &max_cycles))
+				goto bad;
+			break;
+		case 'u':
+			until_halt = true;
+			break;
+		case 'v':
+			t.vcd_path = optarg;
+			break;
+		case 'a':
+		case 'b':
+		case 'g':
+			port = opt == 'g' ? parse_gpio_port(&optarg) : PRUSIM_PORT_R31(opt - 'a');
+			if (port < 0)
+				goto bad;
+			if (stimulus_load(&t.input[port], optarg, err, sizeof(err))) {
+				fprintf(stderr, "prusim: %s\n", err);
+				return EXIT_USAGE;
+			}
+			t.has_input[port] = true;
+			break;
+		case 'd':
+			if (parse_size(optarg, &t.ddr_size) || !t.ddr_size ||
+			    t.ddr_size > 0x40000000)
+				goto bad;
+			break;
+		case 'e':
+			if (nkicks == MAX_EVENTS || parse_kick(optarg, &kicks[nkicks++]))
+				goto bad;
+			break;
+		case 'C':
+			if (set_config(&cfg, optarg))
+				goto bad;
+			break;
+		case 'n':
+			cfg.no_skip = true;
+			break;
+		case 't':
+			t.trace = true;
+			break;
+		case 'j':
+			json = true;
+			break;
+		case 'D':
+			return disasm_elf(optarg);
+		default:
+			goto bad;
+		}
+	}
+	if (optind != argc || (!fw[0] && !fw[1]))
+		goto bad;
+
+	if (t.trace) {
+		run_ops.trace = on_trace;
+		cfg.no_skip = true;
+	}
+	t.sim = calloc(1, sizeof(*t.sim));
+	if (t.ddr_size)
+		t.ddr = calloc(1, t.ddr_size);
+	if (!t.sim || (t.ddr_size && !t.ddr)) {
+		fprintf(stderr, "prusim: out of memory\n");
+		return EXIT_USAGE;
+	}
+	prusim_init(t.sim, &cfg, &run_ops, &t);
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		if (fw[i] && load_firmware(t.sim, i, fw[i]))
+			return EXIT_USAGE;
+	}
+	qsort(kicks, nkicks, sizeof(kicks[0]), compare_kicks);
+	run(&t, kicks, nkicks, max_cycles);
+
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		struct prusim_status st;
+
+		prusim_get_status(t.sim, i, &st);
+		if (st.state == PRUSIM_STOPPED) {
+			fprintf(stderr, "prusim: PRU%u stopped: %s\n", i, st.reason);
+			ret = EXIT_STOPPED;
+		} else if (until_halt && fw[i] && st.state != PRUSIM_HALTED && !ret) {
+			fprintf(stderr, "prusim: PRU%u did not halt within %llu cycles\n",
+				i, (unsigned long long)max_cycles);
+			ret = EXIT_NO_HALT;
+		}
+	}
+	if (t.error) {
+		fprintf(stderr, "prusim: out of memory while tracing\n");
+		ret = EXIT_USAGE;
+	}
+	if (t.vcd_path && vcd_write(&t.vcd, t.vcd_path, t.sim->now)) {
+		fprintf(stderr, "prusim: %s: cannot write\n", t.vcd_path);
+		ret = EXIT_USAGE;
+	}
+	if (json)
+		print_json(&t);
+	for (i = 0; i < PRUSIM_NUM_PORTS; i++)
+		stimulus_free(&t.input[i]);
+	vcd_free(&t.vcd);
+	free(t.ddr);
+	free(t.sim);
+	return ret;
+
+bad:
+	print_usage();
+	return EXIT_USAGE;
+}
