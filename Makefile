@@ -11,6 +11,8 @@
 #   make overlays         device-tree overlays and bindings, validated
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
+#   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]
+#   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
 #   make bench            simulator benchmarks
 #   make check            everything CI runs; ends with "N passed, N failed"
 
@@ -21,11 +23,11 @@ DESTDIR ?=
 FIRMWARE_DIR ?= /lib/firmware
 UDEV_RULES_DIR ?= /etc/udev/rules.d
 
-OUT := $(CURDIR)/out
+BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install \
-	overlays overlays_install udev_install kernels tools kunit checkpatch bench check version
+	overlays overlays_install udev_install kernels tools kunit vmtest vmrun checkpatch bench check version
 
 all: modules
 
@@ -37,26 +39,26 @@ modules_install:
 
 clean:
 	$(MAKE) -C $(KDIR) M=$(CURDIR) clean 2>/dev/null || true
-	rm -rf $(OUT)
+	rm -rf $(BUILD)
 
 version:
 	@echo $(PRUKIT_VERSION)
 
 # pru-gcc from PATH, or bootstrapped into the cache on first use.
 firmware:
-	$(MAKE) -C firmware O=$(OUT)/firmware \
+	$(MAKE) -C firmware O=$(BUILD)/firmware \
 		CROSS_COMPILE=$$($(SCRIPTS)/pru-toolchain.sh)/pru-
 
 firmware_install:
 	install -d $(DESTDIR)$(FIRMWARE_DIR)/prukit
-	install -m 0644 $(OUT)/firmware/*.elf $(DESTDIR)$(FIRMWARE_DIR)/prukit/
+	install -m 0644 $(BUILD)/firmware/*.elf $(DESTDIR)$(FIRMWARE_DIR)/prukit/
 
 overlays:
 	$(SCRIPTS)/overlays.sh
 
 overlays_install:
 	install -d $(DESTDIR)$(FIRMWARE_DIR)
-	install -m 0644 $(OUT)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
+	install -m 0644 $(BUILD)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
 
 udev_install:
 	install -D -m 0644 udev/60-prukit.rules $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
@@ -72,6 +74,15 @@ tools:
 
 kunit:
 	$(SCRIPTS)/kunit.sh
+
+KVERS ?= 5.10 6.1 6.12
+vmtest:
+	$(SCRIPTS)/vm.sh test "$(KVERS)" "$(TESTS)"
+
+vmrun:
+	@test -n "$(KVER)" -a -n "$(SCRIPT)" || \
+		{ echo "usage: make vmrun KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]"; exit 2; }
+	$(SCRIPTS)/vm.sh run $(KVER) $(SCRIPT) "$(IN)" "$(or $(OUT),$(BUILD)/vmrun)"
 
 checkpatch:
 	$(SCRIPTS)/checkpatch.sh

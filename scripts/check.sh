@@ -44,11 +44,16 @@ firmware_check() {
 	CROSS_COMPILE=$bin/pru- O="$PRUKIT_TOP/out/firmware" firmware/check.sh
 }
 
+prusim_check() {
+	make -s -C tools/prusim && tests/prusim/run.sh
+}
+
 step checkpatch scripts/checkpatch.sh
 step kernels scripts/kernels.sh 5.10 6.1 6.12
 step firmware firmware_check
 step overlays scripts/overlays.sh
 step dkms scripts/dkms-test.sh
+step prusim prusim_check
 step kunit scripts/kunit.sh
 
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"

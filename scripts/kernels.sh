@@ -1,16 +1,22 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# kernels.sh [SERIES...]
+# kernels.sh [--build-only] [SERIES...]
 #
 # Cross-build every prukit module for ARM against Debian's armmp kernels
 # (default: 5.10 6.1 6.12) with W=1 and warnings as errors, then run sparse
 # (C=2) over our sources and fail on any sparse warning in them.  Each build
 # happens in out/kernels/<release>/ so the source tree stays clean.  Prints
-# the vermagic of every module built, and "PASS:/FAIL:" lines.
+# the vermagic of every module built, and "PASS:/FAIL:" lines.  With
+# --build-only: just the builds (for the VM harness).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
+build_only=0
+if [ "${1:-}" = --build-only ]; then
+	build_only=1
+	shift
+fi
 [ $# -gt 0 ] || set -- 5.10 6.1 6.12
 need_pkgs gcc-arm-linux-gnueabihf sparse kmod make bc bison flex libssl-dev libelf-dev
 
@@ -53,6 +59,8 @@ while read -r series kver kdir _root; do
 		fail "build $kver, see $log"
 		continue
 	fi
+
+	[ $build_only -eq 1 ] && continue
 
 	# Sparse over our sources: C=2 checks every file whether rebuilt or not.
 	slog=$out/sparse.log

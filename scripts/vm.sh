@@ -1,0 +1,227 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# The prukit VM harness: boots Debian's own armmp kernels under QEMU (TCG,
+# virt machine, 2 CPUs) with a Debian armhf userland, prukit's modules for
+# that kernel, its firmware, and the device tree of QEMU's virt machine plus
+# prukit's simulator overlays.
+#
+#   vm.sh run KVER SCRIPT [IN] [OUT]   (make vmrun)
+#	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
+#	with /proc, /sys, /dev and debugfs mounted, prukit's modules loaded
+#	and the host directory IN unpacked at /in (also the working directory);
+#	copy the guest's /out to OUT; exit with the script's status.
+#   vm.sh test [KVERS] [TESTS]         (make vmtest)
+#	For each kernel, boot once and run the tests in tests/vm/cases (all,
+#	or those named in TESTS), bring back their logs and artifacts to
+#	out/vm/<kernel>/ and print "N passed, N failed" per kernel and overall.
+#
+# Either fails on any oops, BUG, WARN, lockdep report or hung task in the
+# kernel log, and bounds every boot by a timeout (VM_TIMEOUT seconds).
+set -euo pipefail
+. "$(dirname "$0")/lib.sh"
+
+need_pkgs qemu-system-arm device-tree-compiler cpio gzip kmod tar
+
+VM_TIMEOUT=${VM_TIMEOUT:-900}
+VM_MEM=${VM_MEM:-1024}
+VM_CPUS=${VM_CPUS:-2}
+VMDIR=$PRUKIT_TOP/tests/vm
+machine=(-M virt,highmem=off -cpu cortex-a15 -smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+
+# Splats that fail a run wherever they appear in the kernel log.
+splat_re='Oops|BUG:|WARNING:|Unable to handle kernel|Kernel panic|INFO: task .* blocked|possible (recursive|circular) locking|UBSAN:|refcount_t:|list_(add|del) corruption|general protection|stack-protector'
+
+# build_prukit SERIES - cross-build prukit's modules and firmware for SERIES
+# (no-ops when up to date) and set kver, kdir and kimage.
+build_prukit() {
+	local series=$1 line
+	line=$("$PRUKIT_TOP/scripts/fetch-kernels.sh" --image "$series")
+	read -r _ kver kdir _ kimage <<<"$line"
+	"$PRUKIT_TOP/scripts/kernels.sh" --build-only "$series" >/dev/null ||
+		die "building prukit for $kver failed (see out/kernels/$kver/build.log)"
+	make -s -C "$PRUKIT_TOP" firmware >/dev/null
+}
+
+# The device tree: QEMU's own virt tree plus prukit's simulator overlays.
+make_dtb() {
+	local dir=$1 o
+	mkdir -p "$dir"
+	qemu-system-arm "${machine[@]}" -machine dumpdtb="$dir/virt.dtb" -nographic \
+		>/dev/null 2>&1
+	local overlays=()
+	for o in "$PRUKIT_TOP"/out/vm-overlays/*.dtbo; do
+		[ -e "$o" ] && overlays+=("$o")
+	done
+	if [ ${#overlays[@]} -gt 0 ]; then
+		fdtoverlay -i "$dir/virt.dtb" -o "$dir/merged.dtb" "${overlays[@]}"
+	else
+		cp "$dir/virt.dtb" "$dir/merged.dtb"
+	fi
+	# QEMU dumps its tree padded to 1 MiB, and the kernel does not boot
+	# with that (no output at all): write it out compactly.
+	dtc -q -I dtb -O dtb -o "$dir/prukit.dtb" "$dir/merged.dtb"
+}
+
+# make_initrd DIR MODE SCRIPT_OR_TESTS - the userland plus an archive with
+# the kernel's modules, prukit's modules and firmware, and the test harness.
+make_initrd() {
+	local dir=$1 mode=$2 arg=$3 stage=$1/stage rootfs m f d
+	rootfs=$("$PRUKIT_TOP/scripts/vm-rootfs.sh")
+	rm -rf "$stage"
+	mkdir -p "$stage"/{prukit/tests,lib/firmware/prukit,lib/modules/"$kver"}
+
+	local mods=$stage/lib/modules/$kver
+	while read -r m; do
+		case $m in '' | '#'*) continue ;; esac
+		for f in "$kimage/lib/modules/$kver/kernel/$m".ko*; do
+			[ -e "$f" ] || continue
+			mkdir -p "$mods/kernel/$(dirname "$m")"
+			cp "$f" "$mods/kernel/$(dirname "$m")/"
+		done
+	done <"$VMDIR/modules"
+	cp "$kimage/lib/modules/$kver"/modules.{order,builtin,builtin.modinfo} "$mods/" 2>/dev/null || true
+	mkdir -p "$mods/updates"
+	for d in "$PRUKIT_TOP/out/kernels/$kver" "$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
+		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
+	done
+	depmod -b "$stage" -e -E "$kdir/Module.symvers" "$kver" 2>"$dir/depmod.log"
+	if grep -q 'needs unknown symbol' "$dir/depmod.log"; then
+		cat "$dir/depmod.log" >&2
+		die "modules for $kver have unresolved symbols"
+	fi
+
+	cp "$PRUKIT_TOP"/out/firmware/*.elf "$stage/lib/firmware/prukit/"
+	install -m 0755 "$VMDIR/init" "$stage/init"
+	install -m 0755 "$VMDIR/run-tests" "$stage/prukit/run-tests"
+	for f in "$VMDIR"/cases/*; do
+		[ -f "$f" ] && install -m 0755 "$f" "$stage/prukit/tests/"
+	done
+	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
+	{
+		echo "PRUKIT_MODE=$mode"
+		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
+		[ "$mode" = test ] && echo "PRUKIT_TESTS='$arg'"
+		echo "PRUKIT_KVER='$kver'"
+	} >"$stage/prukit/config"
+	[ "$mode" = run ] && install -m 0755 "$arg" "$stage/prukit/script"
+
+	(cd "$stage" && find . -print0 | cpio --null -o -H newc --quiet) >"$dir/prukit.cpio"
+	cat "$rootfs" "$dir/prukit.cpio" >"$dir/initrd"
+}
+
+# boot DIR IN OUT - boot the prepared kernel; console to DIR/console.log.
+# Returns the guest's exit status (or 124 on timeout, 125 without one).
+boot() {
+	local dir=$1 in=$2 out=$3 disk=$1/io.img rc
+	rm -f "$disk"
+	if [ -n "$in" ]; then
+		tar -cf "$disk" -C "$in" .
+	else
+		: >"$disk"
+	fi
+	truncate -s 256M "$disk"
+
+	local start=$(date +%s)
+	set +e
+	timeout --foreground "$VM_TIMEOUT" qemu-system-arm "${machine[@]}" \
+		-accel tcg,thread=multi -nographic -no-reboot \
+		-kernel "$kimage/boot/vmlinuz-$kver" -initrd "$dir/initrd" \
+		-dtb "$dir/dtb/prukit.dtb" \
+		-append "console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init" \
+		-drive if=none,file="$disk",format=raw,id=io \
+		-device virtio-blk-device,drive=io,serial=prukit-io \
+		</dev/null 2>&1 | tee "$dir/console.log" | sed -n '/^prukit-vm:/,$p'
+	rc=${PIPESTATUS[0]}
+	set -e
+	echo "$(( $(date +%s) - start ))" >"$dir/seconds"
+
+	rm -rf "$out"
+	mkdir -p "$out"
+	tar -xf "$disk" -C "$out" 2>/dev/null || true
+	rm -f "$disk"
+
+	if [ "$rc" -eq 124 ]; then
+		echo "FAIL: $kver: no result within ${VM_TIMEOUT} s"
+		return 124
+	fi
+	rc=$(sed -n 's/^PRUKIT-VM-EXIT \([0-9]*\).*/\1/p' "$dir/console.log" | tail -n 1)
+	if [ -z "$rc" ]; then
+		echo "FAIL: $kver: the guest did not finish (see $dir/console.log)"
+		return 125
+	fi
+	return "$rc"
+}
+
+# kernel_log_clean DIR OUT - fail on any splat in the console or dmesg.
+kernel_log_clean() {
+	local dir=$1 out=$2 hits
+	hits=$(cat "$dir/console.log" "$out/dmesg.txt" 2>/dev/null | tr -d '\r' |
+		grep -E "$splat_re" | sort -u || true)
+	if [ -n "$hits" ]; then
+		printf '%s\n' "$hits" | head -n 20
+		echo "FAIL: $kver: kernel log clean (oops/BUG/WARN/lockdep/hung task)"
+		return 1
+	fi
+	echo "PASS: $kver: kernel log clean (no oops, BUG, WARN, lockdep or hung task)"
+}
+
+PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-rpmsg_pru}
+
+cmd=${1:-}
+shift || true
+case $cmd in
+run)
+	series=${1:?usage: vm.sh run KVER SCRIPT [IN] [OUT]}
+	script=${2:?usage: vm.sh run KVER SCRIPT [IN] [OUT]}
+	in=${3:-}
+	[ -z "$in" ] || in=$(cd "$in" && pwd)
+	out=${4:-$PRUKIT_TOP/out/vmrun}
+	[ -f "$script" ] || die "no such script: $script"
+	build_prukit "$series"
+	dir=$PRUKIT_TOP/out/vm/$kver/run
+	mkdir -p "$dir"
+	make_dtb "$dir/dtb"
+	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")"
+	set +e
+	boot "$dir" "$in" "$out" >&2
+	rc=$?
+	kernel_log_clean "$dir" "$out" >&2 || rc=1
+	set -e
+	msg "vmrun: $kver, script exit status $rc, $(cat "$dir/seconds") s; /out in $out"
+	exit "$rc"
+	;;
+test)
+	kvers=${1:-5.10 6.1 6.12}
+	tests=${2:-}
+	if [ -z "$tests" ]; then
+		tests=$(cd "$VMDIR/cases" 2>/dev/null && ls | sort | paste -sd' ' -)
+	fi
+	[ -n "$tests" ] || die "no VM tests in tests/vm/cases"
+	total_p=0
+	total_f=0
+	for series in $kvers; do
+		build_prukit "$series"
+		dir=$PRUKIT_TOP/out/vm/$kver
+		mkdir -p "$dir"
+		make_dtb "$dir/dtb"
+		make_initrd "$dir" test "$tests"
+		res=$dir/results
+		set +e
+		boot "$dir" "" "$dir/out" >"$res"
+		kernel_log_clean "$dir" "$dir/out" >>"$res"
+		set -e
+		grep -E '^(PASS|FAIL):' "$res" | sed "s/^\(PASS\|FAIL\): /\1: $series: /"
+		p=$(grep -c '^PASS:' "$res" || true)
+		f=$(grep -c '^FAIL:' "$res" || true)
+		echo "$series ($kver): $p passed, $f failed, $(cat "$dir/seconds") s (boot and tests)"
+		total_p=$((total_p + p))
+		total_f=$((total_f + f))
+	done
+	echo "$total_p passed, $total_f failed"
+	[ "$total_f" -eq 0 ]
+	;;
+*)
+	die "usage: vm.sh run KVER SCRIPT [IN] [OUT] | vm.sh test [KVERS] [TESTS]"
+	;;
+esac
