@@ -25,4 +25,29 @@
 #define PRUKIT_CLASS_DEVNODE_CONST
 #endif
 
+/*
+ * v5.11: kmap_local_page()/kunmap_local() ("mm/highmem: Provide
+ * kmap_local*"); before, kmap_atomic() is the short-lived mapping.
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#define prukit_kmap_local_page(page)	kmap_local_page(page)
+#define prukit_kunmap_local(addr)	kunmap_local(addr)
+#else
+#define prukit_kmap_local_page(page)	kmap_atomic(page)
+#define prukit_kunmap_local(addr)	kunmap_atomic(addr)
+#endif
+
+/*
+ * v5.13: rproc_ops.da_to_va() gained "bool *is_iomem" ("remoteproc: add
+ * is_iomem to da_to_va").  Declare the op with PRUKIT_RPROC_DA_TO_VA_ARGS;
+ * the body uses rproc, da and len only (callers preset *is_iomem to false).
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 13, 0)
+#define PRUKIT_RPROC_DA_TO_VA_ARGS \
+	struct rproc *rproc, u64 da, size_t len, bool *is_iomem
+#else
+#define PRUKIT_RPROC_DA_TO_VA_ARGS \
+	struct rproc *rproc, u64 da, size_t len
+#endif
+
 #endif /* PRUKIT_COMPAT_H */

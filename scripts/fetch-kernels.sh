@@ -65,7 +65,11 @@ for series in "$@"; do
 			"$root/usr/src/linux-headers-$kver/Makefile"
 		touch "$dest/.complete-headers"
 	fi
-	line="$series $kver $root/usr/src/linux-headers-$kver $root"
+	kdir=$root/usr/src/linux-headers-$kver
+	# Debian's modpost cannot check ARM device tables: rebuild it once.
+	"$PRUKIT_TOP/scripts/fix-modpost.sh" "$series" "$kdir" \
+		"$(dirname "$(readlink -f "$kdir/scripts")")" >&2
+	line="$series $kver $kdir $root"
 	if [ $image -eq 1 ]; then
 		if [ ! -e "$dest/.complete-image" ]; then
 			img=$(pcache pkgnames "linux-image-$kver" |

@@ -31,7 +31,7 @@ copy_sources() {
 	rm -rf "$dest"
 	mkdir -p "$dest"
 	(cd "$PRUKIT_TOP" &&
-		find Kbuild include drivers -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \) \
+		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \) \
 			-print0 | xargs -0 cp --parents -t "$dest")
 }
 
@@ -40,14 +40,14 @@ while read -r series kver kdir _root; do
 	copy_sources "$out"
 	log=$out/build.log
 	kcflags=-Werror
-	extra=()
+	extra=(CONFIG_PRUKIT_TEST_MODULES=m)
 	# A kernel without rpmsg (Debian's 5.10 armmp; TI's 5.10 has it) gets
 	# the kernel's own rpmsg modules built beside it, so that rpmsg users
 	# are still compiled and linked against the real interface.
 	if ! grep -q '^CONFIG_RPMSG=[ym]' "$kdir/.config"; then
 		kit=$("$PRUKIT_TOP/scripts/rpmsg-kit.sh" "$series" "$kdir" "$out-rpmsg-kit")
 		kcflags="$kcflags -DCONFIG_RPMSG_MODULE=1"
-		extra=(CONFIG_RPMSG=m KBUILD_EXTRA_SYMBOLS="$kit/Module.symvers")
+		extra+=(CONFIG_RPMSG=m KBUILD_EXTRA_SYMBOLS="$kit/Module.symvers")
 		echo "  ($kver has no CONFIG_RPMSG: rpmsg_core built from linux-source-$series)"
 	fi
 	kmake=(make -C "$kdir" M="$out" ARCH=arm CROSS_COMPILE=$cross CC=${cross}gcc

@@ -1,24 +1,26 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# linux-source.sh SERIES [full|dt|rpmsg]
+# linux-source.sh SERIES [full|dt|rpmsg|modpost]
 #
 # Print the path of an extracted Debian linux-source-SERIES tree (5.10, 6.1,
 # 6.12), fetching the package through the private apt configuration
-# (scripts/papt.sh) and extracting it into $PRUKIT_CACHE first if needed.
-#   full   everything (KUnit, checkpatch) - the default
-#   dt     what device-tree work needs: dts, dt-bindings, scripts/dtc, bindings
-#   rpmsg  drivers/rpmsg only (the rpmsg modules for kernels built without them)
+# (scripts/papt.sh) into $PRUKIT_CACHE once and extracting what is asked:
+#   full     everything (KUnit, checkpatch) - the default
+#   dt       dts, dt-bindings, scripts/dtc and the binding documents
+#   rpmsg    drivers/rpmsg (rpmsg modules for kernels built without them)
+#   modpost  what modpost is built from (for cross builds)
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/papt.sh"
 
-series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg]}
+series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg|modpost]}
 what=${2:-full}
 case $what in
 full) paths=() ;;
 dt) paths=(arch/arm/boot/dts include/dt-bindings scripts/dtc Documentation/devicetree/bindings) ;;
 rpmsg) paths=(drivers/rpmsg) ;;
+modpost) paths=(scripts/mod scripts/include include/linux/license.h include/linux/mod_devicetable.h include/linux/module_symbol.h) ;;
 *) die "unknown part '$what'" ;;
 esac
 
@@ -30,12 +32,20 @@ dest=$PRUKIT_CACHE/linux-source-$pkgver-$what
 top=$dest/linux-source-$series
 
 if [ ! -e "$dest/.complete" ]; then
+	tarball=$PRUKIT_CACHE/linux-source-$pkgver.tar.xz
+	if [ ! -e "$tarball" ]; then
+		msg "fetching $pkg ($pkgver)"
+		tmp=$(mktemp -d "$PRUKIT_CACHE/linux-source.XXXXXX")
+		papt_fetch "$tmp" "$pkg"
+		mv "$tmp"/usr/src/linux-source-"$series".tar.xz "$tarball"
+		rm -rf "$tmp"
+	fi
 	msg "extracting $pkg ($pkgver, $what) into $dest"
 	rm -rf "$dest"
-	papt_fetch "$dest/deb" "$pkg"
-	tarball=$(ls "$dest"/deb/usr/src/linux-source-"$series".tar.*)
-	tar -C "$dest" -xf "$tarball" "${paths[@]/#/linux-source-$series/}"
-	rm -rf "$dest/deb"
+	mkdir -p "$dest"
+	# A part some releases lack (scripts/include before 6.x) is not an error.
+	tar -C "$dest" -xf "$tarball" "${paths[@]/#/linux-source-$series/}" 2>/dev/null || true
+	[ -d "$top" ] || die "cannot extract $pkg"
 	touch "$dest/.complete"
 fi
 echo "$top"

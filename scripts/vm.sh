@@ -49,9 +49,12 @@ make_dtb() {
 	mkdir -p "$dir"
 	qemu-system-arm "${machine[@]}" -machine dumpdtb="$dir/virt.dtb" -nographic \
 		>/dev/null 2>&1
-	local overlays=()
-	for o in "$PRUKIT_TOP"/out/vm-overlays/*.dtbo; do
-		[ -e "$o" ] && overlays+=("$o")
+	local overlays=() name
+	for o in "$VMDIR"/overlays/*.dtso; do
+		[ -e "$o" ] || continue
+		name=$(basename "$o" .dtso)
+		dtc -q -@ -I dts -O dtb -o "$dir/$name.dtbo" "$o"
+		overlays+=("$dir/$name.dtbo")
 	done
 	if [ ${#overlays[@]} -gt 0 ]; then
 		fdtoverlay -i "$dir/virt.dtb" -o "$dir/merged.dtb" "${overlays[@]}"
@@ -166,7 +169,9 @@ kernel_log_clean() {
 	echo "PASS: $kver: kernel log clean (no oops, BUG, WARN, lockdep or hung task)"
 }
 
-PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-rpmsg_pru}
+# Loaded in this order at boot: the rpmsg transport (no udev loads it), then
+# prukit's modules and the test consumer.
+PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-virtio_rpmsg_bus rpmsg_pru pru_sim pru_test_consumer}
 
 cmd=${1:-}
 shift || true
@@ -211,6 +216,15 @@ test)
 		boot "$dir" "" "$dir/out" >"$res"
 		kernel_log_clean "$dir" "$dir/out" >>"$res"
 		set -e
+		# Host halves of tests, on what the guest brought back.
+		for t in $tests; do
+			[ -x "$VMDIR/host/$t" ] || continue
+			if [ -d "$dir/out/$t" ]; then
+				"$VMDIR/host/$t" "$dir/out/$t" >>"$res" 2>&1 || true
+			else
+				echo "FAIL: $t: no artifacts came back for its host half" >>"$res"
+			fi
+		done
 		grep -E '^(PASS|FAIL):' "$res" | sed "s/^\(PASS\|FAIL\): /\1: $series: /"
 		p=$(grep -c '^PASS:' "$res" || true)
 		f=$(grep -c '^FAIL:' "$res" || true)

@@ -494,6 +494,7 @@ void prusim_get_status(const struct prusim *s, unsigned int core,
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */
 void prusim_raise_event(struct prusim *s, unsigned int event);
+void prusim_input_changed(struct prusim *s, unsigned int port);
 bool prusim_host_pending(const struct prusim *s, unsigned int host);
 int prusim_host_read(struct prusim *s, u32 offset, void *buf, size_t len);
 int prusim_host_write(struct prusim *s, u32 offset, const void *buf, size_t len);

@@ -593,22 +593,33 @@ static u64 skip_limit(struct prusim *s, struct prusim_core *c, u64 from, u32 *lc
 	return prusim_min_u64(limit, c->r31_until);
 }
 
+/*
+ * Move an idle core @cycles (a whole number of its loop periods) forward, as
+ * if it had stepped through them.  The watch moves too: its cycle and counts
+ * are the baseline of the next idle_watch(), which must measure one
+ * iteration, not the iteration plus the skipped ones.
+ */
 static void skip_core(struct prusim_core *c, u64 cycles)
 {
-	u64 n;
+	u64 n, insns, stalls;
 
 	if (c->state != PRUSIM_RUNNING || c->xfr_wait)
 		return;
 	n = prusim_div_u64(cycles, c->idle.period);
-	c->insns += n * c->idle.insns;
-	c->stalls += n * c->idle.stalls;
+	insns = n * c->idle.insns;
+	stalls = n * c->idle.stalls;
+	c->insns += insns;
+	c->stalls += stalls;
 	if (c->control & PRUSIM_CTRL_CTR_EN) {
+		/* skip_limit() keeps CYCLE below saturation */
 		c->cycle_cnt += cycles;
-		c->stall_cnt = (u64)c->stall_cnt + n * c->idle.stalls >= COUNTER_MAX ?
-			       COUNTER_MAX : c->stall_cnt + n * c->idle.stalls;
+		c->stall_cnt = (u64)c->stall_cnt + stalls >= COUNTER_MAX ?
+			       COUNTER_MAX : c->stall_cnt + stalls;
 	}
 	c->next += cycles;
 	c->watch.cycle += cycles;
+	c->watch.insns += insns;
+	c->watch.stalls += stalls;
 }
 
 /*
@@ -1543,4 +1554,30 @@ void prusim_get_status(const struct prusim *s, unsigned int core, struct prusim_
 	st->stall_cnt = c->stall_cnt;
 	memcpy(st->regs, c->r, sizeof(st->regs));
 	st->reason = c->reason;
+}
+
+/**
+ * prusim_input_changed() - an input source changed its pattern
+ * @s: simulator
+ * @port: PRUSIM_PORT_R31() or PRUSIM_PORT_GPIO() number
+ *
+ * The simulator caches input values until the change their source announced
+ * (&prusim_ops.input's next_change).  An embedder whose source changes
+ * otherwise (new stimulus) calls this between prusim_run() calls: the next
+ * read asks the source again, and sleeping or idle cores look again.
+ */
+void prusim_input_changed(struct prusim *s, unsigned int port)
+{
+	unsigned int i;
+
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		struct prusim_core *c = &s->core[i];
+
+		if (port != PRUSIM_PORT_R31(i))
+			continue;
+		c->r31_until = s->now;
+		if (c->state == PRUSIM_SLEEPING && c->wake_on_status)
+			c->next = s->now;
+	}
+	s->epoch++;
 }

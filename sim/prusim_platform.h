@@ -22,6 +22,14 @@ static inline u64 prusim_div_u64(u64 dividend, u32 divisor)
 	return div_u64(dividend, divisor);
 }
 
+static inline u64 prusim_rem_u64(u64 dividend, u64 divisor)
+{
+	u64 rem;
+
+	div64_u64_rem(dividend, divisor, &rem);
+	return rem;
+}
+
 #else /* !__KERNEL__ */
 
 #include <errno.h>
@@ -64,9 +72,18 @@ typedef uint64_t u64;
 #define __printf(a, b)	__attribute__((__format__(printf, a, b)))
 #endif
 
+#ifndef __packed
+#define __packed	__attribute__((__packed__))
+#endif
+
 static inline u64 prusim_div_u64(u64 dividend, u32 divisor)
 {
 	return dividend / divisor;
+}
+
+static inline u64 prusim_rem_u64(u64 dividend, u64 divisor)
+{
+	return dividend % divisor;
 }
 
 #endif /* __KERNEL__ */

@@ -3,7 +3,8 @@
  * prusim unit tests that need the embedding API rather than the CLI: the
  * ELF loader (accepts, rejects, resource table, .pru_irq_map), host access
  * and CTRL semantics, events raised by the embedder, the host interrupt
- * callback and how often the input callback is called.
+ * callback, how often the input callback is called and the shared stimulus
+ * parser and lookup (sim/prusim_stim.c).
  *
  * usage: unit_test FW.elf RSC_OFFSET RSC_SIZE
  *   FW.elf is a firmware with a .resource_table and a two-entry
@@ -17,6 +18,7 @@
 #include <string.h>
 
 #include "prusim.h"
+#include "prusim_stim.h"
 
 /* Instruction words (checked against pru-objdump by the disassembler test) */
 #define LDI_R1(v)	(0x240000e1u | (v) << 8)	/* ldi r1, v */
@@ -285,6 +287,8 @@ static void log_irq(void *ctx, u64 cycle, unsigned int host, bool level)
 	}
 }
 
+#define ARRAY_SIZE(a)	(sizeof(a) / sizeof((a)[0]))
+
 /* Route system event @ev to @channel and host @host through INTC registers */
 static void intc_route(struct prusim *s, u8 ev, u8 channel, u8 host)
 {
@@ -388,6 +392,575 @@ static void test_input_calls(void)
 	}
 }
 
+/* An input source that changes without announcing it (next_change: never) */
+struct silent_input {
+	u32 value;
+	unsigned int calls;
+};
+
+static u32 silent_input(void *ctx, unsigned int port, u64 cycle __always_unused, u64 *next)
+{
+	struct silent_input *in = ctx;
+
+	*next = PRUSIM_NEVER;
+	if (port != PRUSIM_PORT_R31(0))
+		return 0;
+	in->calls++;
+	return in->value;
+}
+
+/*
+ * prusim_input_changed(): PRU0 waits for R31 bit 3 with WBS (round 0) or
+ * sleeps in SLP 1 with WAKEUP_EN bit 3 (round 1).  The source sets the bit
+ * at cycle 1000 without announcing it: the cached value hides it, and so
+ * does prusim_input_changed() for PRU1's port; after prusim_input_changed()
+ * for PRU0's port the core sees it in the next cycle simulated (2000).
+ * Both with and without idle skipping.
+ */
+static void run_to(struct prusim *s, u64 until)
+{
+	if (s->now < until && prusim_run(s, until - s->now) < until - s->now)
+		s->now = until;		/* returned early: nothing can happen before */
+}
+
+static void test_input_changed(void)
+{
+	static const u32 wbs[] = { WBS_R31_3, LDI_R1(5), HALT };
+	static const u32 slp[] = { SLP_1, LDI_R1(5), HALT };
+	static const u64 want_insns[2] = { 2003, 3 }, want_ran[2] = { 3, 2 };
+	const struct prusim_ops ops = { .input = silent_input };
+	struct silent_input in;
+	struct prusim_config cfg;
+	struct prusim_status st;
+	unsigned int round, skip, calls;
+	struct prusim *s;
+	char name[48];
+	u32 wake = 1u << 3;
+	u64 ran;
+
+	for (round = 0; round < 2; round++) {
+		for (skip = 0; skip < 2; skip++) {
+			snprintf(name, sizeof(name), "input-changed-%s-%s", round ? "slp" : "wbs",
+				 skip ? "skip" : "step");
+			prusim_default_config(&cfg);
+			cfg.no_skip = !skip;
+			s = calloc(1, sizeof(*s));
+			memset(&in, 0, sizeof(in));
+			prusim_init(s, &cfg, &ops, &in);
+			put_words(s, 0, round ? slp : wbs, 3);
+			prusim_host_write(s, 0x22008, &wake, 4);	/* WAKEUP_EN */
+			prusim_core_enable(s, 0, true);
+			run_to(s, 1000);
+			in.value = 1u << 3;
+			run_to(s, 1500);
+			prusim_input_changed(s, PRUSIM_PORT_R31(1));
+			run_to(s, 2000);
+			prusim_get_status(s, 0, &st);
+			calls = in.calls;
+			if (st.state != (round ? PRUSIM_SLEEPING : PRUSIM_RUNNING) ||
+			    st.pc != round || s->now != 2000) {
+				check(false, name, "before the call: state %d pc %u at %llu, %u calls",
+				      st.state, st.pc, (unsigned long long)s->now, calls);
+				free(s);
+				continue;
+			}
+			prusim_input_changed(s, PRUSIM_PORT_R31(0));
+			ran = prusim_run(s, 1000);
+			prusim_get_status(s, 0, &st);
+			check(st.state == PRUSIM_HALTED && st.regs[1] == 5 && ran == want_ran[round] &&
+			      st.insns == want_insns[round] && in.calls == calls + 1, name,
+			      "state %d r1 %u, %llu cycles, %llu instructions, %u calls after",
+			      st.state, st.regs[1], (unsigned long long)ran,
+			      (unsigned long long)st.insns, in.calls - calls);
+			free(s);
+		}
+	}
+}
+
+/*
+ * Idle skipping against stepping on random waits.  The image holds seven
+ * small programs that wait in different ways; every round picks one per
+ * core, random R31 stimuli (with entries that change nothing, sometimes
+ * periodic), the cycle counter (sometimes near saturation), timing
+ * parameters, events raised between runs (one routed to R31 bit 30) and
+ * prusim_input_changed() calls.  One run steps every cycle in one
+ * prusim_run() call per segment; the other skips, in random slices as a
+ * kernel thread would run it.  Counts, registers, CYCLE/STALL, memories and
+ * every pin change must agree.
+ */
+static const u32 fuzz_image[] = {
+	/* 0 echo: R31 & 0xffff -> R30, 4 cycles */
+	0x24ffffe1, 0x1300ffe0, 0x10e1e0e0, 0x1300e0fe, 0x21000100,
+	/* 5 wbs r31, 3; set r30.0; wbc r31, 3; clr r30.0: 1-cycle waits */
+	0xc903ff00, 0x1f00fefe, 0xd103ff00, 0x1d00fefe, 0x21000500,
+	/* 10 poll a shared RAM word for a change: lbbo (3) + qbeq, toggle r30.1 */
+	0x240001c4, 0x24000084, 0xf1002485, 0x56e6e5ff, 0x1300e5e6, 0x1502fefe, 0x21000c00,
+	/* 17 store R31 to that word when it changes */
+	0x240001c4, 0x24000084, 0x1300ffe0, 0x56e7e0ff, 0x1300e0e7, 0xe1002480, 0x21001300,
+	/* 24 call a subroutine reading R31 until bit 2 (an inner branch) */
+	0x23001dc3, 0xcf02e8ff, 0x1300e8fe, 0x240000e8, 0x21001800,
+	/* 29 the subroutine: r8 = r31 & 0xc; ret */
+	0x1300ffe8, 0x110ce8e8, 0x20c30000,
+	/* 32 slp 1; mov r30, r31 */
+	0x3e800000, 0x1300fffe, 0x21002000,
+	/* 35 wait for bit 2, then count in DRAM until it falls */
+	0x1300ffe0, 0x1104e0e0, 0x5700e0fe, 0xf1002489, 0x0101e9e9, 0xe1042489, 0x6f00e0fa,
+};
+
+static const u32 fuzz_entry[] = { 0, 5, 10, 17, 24, 32, 35 };
+
+#define FUZZ_ENTRIES	24
+#define FUZZ_KICKS	4
+
+struct fuzz_round {
+	unsigned int prog[2];
+	bool ctr_en[2];
+	u32 cycle_preset[2];
+	u32 wakeup_en[2];
+	struct prusim_config cfg;
+	u64 cycle[2][FUZZ_ENTRIES];
+	u32 value[2][FUZZ_ENTRIES];
+	struct prusim_stim st[2];
+	unsigned int kicks;
+	u64 kick_cycle[FUZZ_KICKS];
+	unsigned int kick_event[FUZZ_KICKS];
+	bool kick_input[FUZZ_KICKS];
+	u64 end;
+};
+
+struct fuzz_result {
+	struct prusim_status st[2];
+	char reason[2][PRUSIM_REASON_LEN];
+	u64 now;
+	u64 pins;
+	u64 pin_hash;
+	u8 mem_hash[3];
+	unsigned int idle_seen;
+};
+
+struct fuzz_ctx {
+	const struct fuzz_round *r;
+	struct fuzz_result *res;
+};
+
+static u64 fuzz_rng;
+
+static u64 fuzz_rand(void)
+{
+	fuzz_rng ^= fuzz_rng << 13;
+	fuzz_rng ^= fuzz_rng >> 7;
+	fuzz_rng ^= fuzz_rng << 17;
+	return fuzz_rng;
+}
+
+static u32 fuzz_input(void *ctx, unsigned int port, u64 cycle, u64 *next)
+{
+	const struct fuzz_ctx *f = ctx;
+
+	if (port >= 2) {
+		*next = PRUSIM_NEVER;
+		return 0;
+	}
+	return prusim_stim_value(&f->r->st[port], cycle, next);
+}
+
+static void fuzz_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
+{
+	struct fuzz_result *res = ((struct fuzz_ctx *)ctx)->res;
+
+	res->pins++;
+	res->pin_hash = (res->pin_hash ^ (cycle << 9 | pin << 1 | level)) * 0x100000001b3ull;
+}
+
+static void fuzz_make(struct fuzz_round *r)
+{
+	unsigned int core, i, n;
+
+	memset(r, 0, sizeof(*r));
+	prusim_default_config(&r->cfg);
+	if (!(fuzz_rand() % 4))
+		r->cfg.r31_sync_delay = fuzz_rand() % 5;
+	r->cfg.event_latency = 1 + fuzz_rand() % 3;
+	for (core = 0; core < 2; core++) {
+		u64 t = 0;
+
+		r->prog[core] = fuzz_rand() % ARRAY_SIZE(fuzz_entry);
+		r->ctr_en[core] = fuzz_rand() % 2;
+		if (!(fuzz_rand() % 3))
+			r->cycle_preset[core] = 0xffffffffu - fuzz_rand() % 200000;
+		r->wakeup_en[core] = (fuzz_rand() % 2 ? 1u << 3 : 1u << 2) |
+				     (fuzz_rand() % 2 ? 1u << 30 : 0);
+		n = 1 + fuzz_rand() % FUZZ_ENTRIES;
+		for (i = 0; i < n; i++) {
+			u32 v = (fuzz_rand() & 0xd) | (fuzz_rand() % 4 ? 0 : 0x8000);
+
+			if (i) {
+				t += 1 + (fuzz_rand() % 8 ? fuzz_rand() % (fuzz_rand() % 2 ? 400 : 6000)
+							  : fuzz_rand() % 3);
+				if (fuzz_rand() % 5 < 2)
+					v = r->value[core][i - 1];
+			}
+			r->cycle[core][i] = t;
+			r->value[core][i] = v;
+		}
+		r->st[core].cycle = r->cycle[core];
+		r->st[core].value = r->value[core];
+		r->st[core].count = n;
+		if (!(fuzz_rand() % 3))
+			r->st[core].period = t + 1 + fuzz_rand() % 2000;
+	}
+	r->end = 20000 + fuzz_rand() % 150000;
+	r->kicks = fuzz_rand() % (FUZZ_KICKS + 1);
+	for (i = 0; i < r->kicks; i++) {
+		/* increasing cycles, before the end */
+		r->kick_cycle[i] = (i ? r->kick_cycle[i - 1] : 0) + 1 +
+				   fuzz_rand() % (r->end / FUZZ_KICKS);
+		r->kick_event[i] = fuzz_rand() % 2 ? 17 : 40;
+		r->kick_input[i] = fuzz_rand() % 2;
+	}
+}
+
+static u8 fuzz_mem_hash(const u8 *p, size_t n)
+{
+	u8 h = 0;
+
+	while (n--)
+		h = (h << 1 | h >> 7) ^ *p++;
+	return h;
+}
+
+/* Run round @r; @slices: random prusim_run() budgets, else one per segment */
+static void fuzz_run(const struct fuzz_round *r, bool skip, bool slices, struct fuzz_result *res)
+{
+	struct fuzz_ctx f = { .r = r, .res = res };
+	const struct prusim_ops ops = { .input = fuzz_input, .pin = fuzz_pin };
+	struct prusim_config cfg = r->cfg;
+	struct prusim *s = calloc(1, sizeof(*s));
+	unsigned int core, k;
+
+	memset(res, 0, sizeof(*res));
+	cfg.no_skip = !skip;
+	prusim_init(s, &cfg, &ops, &f);
+	intc_route(s, 17, 0, 0);			/* event 17 -> R31 bit 30 */
+	for (core = 0; core < 2; core++) {
+		u32 pc = fuzz_entry[r->prog[core]], base = 0x22000 + 0x2000 * core;
+		u32 control = 0x3 | (r->ctr_en[core] ? 0x8 : 0) | pc << 16;
+
+		put_words(s, core, fuzz_image, ARRAY_SIZE(fuzz_image));
+		prusim_core_reset(s, core, pc);
+		prusim_host_write(s, base + 0x08, &r->wakeup_en[core], 4);
+		if (r->cycle_preset[core])
+			prusim_host_write(s, base + 0x0c, &r->cycle_preset[core], 4);
+		prusim_host_write(s, base, &control, 4);
+	}
+	for (k = 0; k <= r->kicks; k++) {
+		u64 until = k < r->kicks ? r->kick_cycle[k] : r->end;
+
+		while (s->now < until) {
+			u64 ask = until - s->now, ran;
+
+			if (slices)
+				ask = prusim_min_u64(ask, 1 + fuzz_rand() %
+						     (fuzz_rand() % 2 ? 50 : 20000));
+			ran = prusim_run(s, ask);
+			for (core = 0; core < 2; core++)
+				res->idle_seen += s->core[core].state == PRUSIM_RUNNING &&
+						  s->core[core].idle.epoch == s->epoch;
+			if (ran < ask)
+				s->now = until;		/* nothing can happen before */
+		}
+		if (k < r->kicks) {
+			prusim_raise_event(s, r->kick_event[k]);
+			if (r->kick_input[k])
+				prusim_input_changed(s, PRUSIM_PORT_R31(k % 2));
+		}
+	}
+	for (core = 0; core < 2; core++) {
+		prusim_get_status(s, core, &res->st[core]);
+		snprintf(res->reason[core], PRUSIM_REASON_LEN, "%s", res->st[core].reason);
+		res->st[core].reason = NULL;		/* points into *s */
+	}
+	res->now = s->now;
+	res->mem_hash[0] = fuzz_mem_hash(s->core[0].dram, PRUSIM_DRAM_SIZE);
+	res->mem_hash[1] = fuzz_mem_hash(s->core[1].dram, PRUSIM_DRAM_SIZE);
+	res->mem_hash[2] = fuzz_mem_hash(s->shared, PRUSIM_SHARED_SIZE);
+	free(s);
+}
+
+/* "" if @a and @b agree, else what differs */
+static const char *fuzz_diff(const struct fuzz_result *a, const struct fuzz_result *b)
+{
+	unsigned int core;
+
+	for (core = 0; core < 2; core++) {
+		const struct prusim_status *x = &a->st[core], *y = &b->st[core];
+
+		if (x->insns != y->insns)
+			return "instructions";
+		if (x->stalls != y->stalls)
+			return "stalls";
+		if (x->cycle_cnt != y->cycle_cnt || x->stall_cnt != y->stall_cnt)
+			return "CYCLE/STALL";
+		if (x->state != y->state || x->pc != y->pc ||
+		    memcmp(x->regs, y->regs, sizeof(x->regs)) ||
+		    strcmp(a->reason[core], b->reason[core]))
+			return "state, pc or registers";
+	}
+	if (a->now != b->now)
+		return "end cycle";
+	if (a->pins != b->pins || a->pin_hash != b->pin_hash)
+		return "pin changes";
+	if (memcmp(a->mem_hash, b->mem_hash, sizeof(a->mem_hash)))
+		return "memory";
+	return "";
+}
+
+static void test_skip_fuzz(unsigned int rounds)
+{
+	unsigned int round, bad = 0, skipped_rounds = 0, counted = 0;
+	struct fuzz_result step, skip, sliced;
+	struct fuzz_round r;
+	char why[160] = "";
+	const char *d;
+
+	fuzz_rng = 0x2545f4914f6cdd1dull;
+	for (round = 0; round < rounds; round++) {
+		fuzz_make(&r);
+		fuzz_run(&r, false, false, &step);
+		fuzz_run(&r, true, false, &skip);
+		fuzz_run(&r, true, true, &sliced);
+		d = fuzz_diff(&step, &skip);
+		if (!*d)
+			d = fuzz_diff(&step, &sliced);
+		if (*d && !bad++)
+			snprintf(why, sizeof(why), "round %u (programs %u/%u, %llu cycles): %s differ",
+				 round, r.prog[0], r.prog[1], (unsigned long long)r.end, d);
+		/* rounds in which a running core was found idle after a slice */
+		skipped_rounds += sliced.idle_seen > 0;
+		counted += r.ctr_en[0] || r.ctr_en[1];
+	}
+	check(!bad && skipped_rounds > rounds / 4 && counted > rounds / 4, "skip-fuzz",
+	      "%u of %u rounds differ; first: %s (idle loops in %u rounds, %u with CTR_EN)", bad, rounds,
+	      why, skipped_rounds, counted);
+}
+
+#define STIM_CAP	64
+
+/* Both passes of prusim_stim_parse(); the passes must agree. */
+static int stim_parse2(const char *text, size_t len, struct prusim_stim *st, u64 *cycles,
+		       u32 *values, char *err, size_t errlen)
+{
+	int n = prusim_stim_parse(text, len, NULL, err, errlen), m;
+
+	if (n < 0 || n > STIM_CAP)
+		return n < 0 ? n : -E2BIG;
+	st->cycle = cycles;
+	st->value = values;
+	st->count = n;
+	st->period = 12345;
+	m = prusim_stim_parse(text, len, st, err, errlen);
+	if (m != n)
+		return -EPROTO;
+	return n;
+}
+
+/* Values and next changes at the given cycles, compared with @want */
+static void stim_expect(const char *name, const struct prusim_stim *st, size_t n,
+			const u64 *at, const u32 *want, const u64 *want_next)
+{
+	char why[256] = "";
+	size_t i;
+	u64 next;
+	u32 v;
+
+	for (i = 0; i < n && !why[0]; i++) {
+		next = 0;
+		v = prusim_stim_value(st, at[i], &next);
+		if (v != want[i] || next != want_next[i])
+			snprintf(why, sizeof(why), "at %llu: %u next %llu, expected %u next %llu",
+				 (unsigned long long)at[i], v, (unsigned long long)next, want[i],
+				 (unsigned long long)want_next[i]);
+	}
+	check(!why[0], name, "%s", why);
+}
+
+static void test_stim_lookup(void)
+{
+	static const char text[] = "# comment line\n0 0\n4\t1  # trailing comment\n\n"
+		"0x10 0xFF\r\n  20 007";		/* CRLF, leading zeros, no final newline */
+	static const u64 at[] = { 0, 3, 4, 15, 16, 19, 20, 1000000000000ull };
+	static const u32 want[] = { 0, 0, 1, 1, 255, 255, 7, 7 };
+	static const u64 next[] = { 4, 4, 16, 16, 20, 20, PRUSIM_NEVER, PRUSIM_NEVER };
+	static const char clock[] = "0 0\n4 1\nrepeat 8\n# end\n";
+	static const u64 cat[] = { 0, 3, 4, 7, 8, 12, 8000029, (1ull << 40) + 4 };
+	static const u32 cwant[] = { 0, 0, 1, 1, 0, 1, 1, 1 };
+	static const u64 cnext[] = { 4, 4, 8, 8, 12, 16, 8000032, (1ull << 40) + 8 };
+	static const char slow[] = "0 1\n0x100000000 2\nrepeat 0x200000000\n";
+	static const u64 sat[] = { 0x300000001ull, 0x2ffffffffull, 0xfffffffffull };
+	static const u32 swant[] = { 2, 1, 2 };
+	static const u64 snext[] = { 0x400000000ull, 0x300000000ull, 0x1000000000ull };
+	static const char late[] = "10 5";
+	static const u64 lat[] = { 0, 9, 10, 11 };
+	static const u32 lwant[] = { 0, 0, 5, 5 };
+	static const u64 lnext[] = { 10, 10, PRUSIM_NEVER, PRUSIM_NEVER };
+	u64 cycles[STIM_CAP];
+	u32 values[STIM_CAP];
+	struct prusim_stim st;
+	char err[96];
+	int n;
+
+	n = stim_parse2(text, strlen(text), &st, cycles, values, err, sizeof(err));
+	check(n == 4 && st.count == 4 && st.period == 0 && !err[0] && cycles[2] == 16 &&
+	      values[2] == 255 && cycles[3] == 20 && values[3] == 7, "stim-parse",
+	      "returned %d, count %zu, period %llu, err '%s'", n, st.count,
+	      (unsigned long long)st.period, err);
+	if (n == 4)
+		stim_expect("stim-value", &st, 8, at, want, next);
+
+	n = stim_parse2(clock, strlen(clock), &st, cycles, values, err, sizeof(err));
+	check(n == 2 && st.period == 8, "stim-parse-repeat", "returned %d, period %llu, err '%s'",
+	      n, (unsigned long long)st.period, err);
+	if (n == 2)
+		stim_expect("stim-value-repeat", &st, 8, cat, cwant, cnext);
+
+	n = stim_parse2(slow, strlen(slow), &st, cycles, values, err, sizeof(err));
+	check(n == 2 && st.period == 0x200000000ull, "stim-parse-period-64bit",
+	      "returned %d, period %llu, err '%s'", n, (unsigned long long)st.period, err);
+	if (n == 2)
+		stim_expect("stim-value-period-64bit", &st, 3, sat, swant, snext);
+
+	n = stim_parse2(late, strlen(late), &st, cycles, values, err, sizeof(err));
+	check(n == 1, "stim-parse-late", "returned %d, err '%s'", n, err);
+	if (n == 1)
+		stim_expect("stim-value-before-first", &st, 4, lat, lwant, lnext);
+
+	n = stim_parse2(NULL, 0, &st, cycles, values, err, sizeof(err));
+	check(n == 0 && st.count == 0 && st.period == 0 &&
+	      prusim_stim_value(&st, 5, &cycles[0]) == 0 && cycles[0] == PRUSIM_NEVER,
+	      "stim-empty", "returned %d, count %zu", n, st.count);
+	n = prusim_stim_parse("# only a comment\n\n", 18, NULL, NULL, 0);
+	check(n == 0, "stim-comments-only", "returned %d", n);
+	n = prusim_stim_parse("18446744073709551615 1\n", 23, NULL, err, sizeof(err));
+	check(n == 1, "stim-max-cycle", "returned %d, err '%s'", n, err);
+}
+
+/**
+ * struct stim_bad - a malformed stimulus text and what the parser must say
+ * @text: the text
+ * @ret: expected return value
+ * @msg: expected error text
+ */
+struct stim_bad {
+	const char *text;
+	int ret;
+	const char *msg;
+};
+
+static void test_stim_errors(void)
+{
+	static const struct stim_bad bad[] = {
+		{ "0 1\n10 2\n5 3\n", -EINVAL, "line 3: cycles must increase" },
+		{ "# x\r\n\r\n0 1\r\n0 2\r\n", -EINVAL, "line 4: cycles must increase" },
+		{ "0 1 2\n", -EINVAL, "line 1: expected \"CYCLE VALUE\" or \"repeat PERIOD\"" },
+		{ "\n\n5\n", -EINVAL, "line 3: expected \"CYCLE VALUE\" or \"repeat PERIOD\"" },
+		{ "0 0x100000000", -EINVAL, "line 1: bad value \"0x100000000\" (32 bits at most)" },
+		{ "0 4294967296", -EINVAL, "line 1: bad value \"4294967296\" (32 bits at most)" },
+		{ "18446744073709551616 1", -EINVAL, "line 1: bad cycle \"18446744073709551616\"" },
+		{ "0x10000000000000000 1", -EINVAL, "line 1: bad cycle \"0x10000000000000000\"" },
+		{ "0x 1", -EINVAL, "line 1: bad cycle \"0x\"" },
+		{ "-1 5", -EINVAL, "line 1: bad cycle \"-1\"" },
+		{ "1e3 5", -EINVAL, "line 1: bad cycle \"1e3\"" },
+		{ "12 0x1g", -EINVAL, "line 1: bad value \"0x1g\" (32 bits at most)" },
+		{ "0 1\nrepeat 0\n", -EINVAL, "line 2: bad period \"0\"" },
+		{ "0 1\nrepeat x\n", -EINVAL, "line 2: bad period \"x\"" },
+		{ "1 1\nrepeat 8\n", -EINVAL,
+		  "line 2: a repeated pattern must start at cycle 0 and end before its period" },
+		{ "0 1\n8 0\nrepeat 8\n", -EINVAL,
+		  "line 3: a repeated pattern must start at cycle 0 and end before its period" },
+		{ "repeat 8\n", -EINVAL,
+		  "line 1: a repeated pattern must start at cycle 0 and end before its period" },
+		{ "0 1\nrepeat 8\n# fine\n4 2\n", -EINVAL,
+		  "line 4: nothing may follow \"repeat\"" },
+		{ "0 1\nrepeat 8\nrepeat 8\n", -EINVAL, "line 3: nothing may follow \"repeat\"" },
+	};
+	char err[96], why[256] = "";
+	u64 cycles[2];
+	u32 values[2];
+	struct prusim_stim st = { cycles, values, 2, 0 };
+	size_t i;
+	int n;
+
+	for (i = 0; i < ARRAY_SIZE(bad) && !why[0]; i++) {
+		n = prusim_stim_parse(bad[i].text, strlen(bad[i].text), NULL, err, sizeof(err));
+		if (n != bad[i].ret || strcmp(err, bad[i].msg))
+			snprintf(why, sizeof(why), "text %zu: returned %d '%s', expected %d '%s'",
+				 i, n, err, bad[i].ret, bad[i].msg);
+	}
+	check(!why[0], "stim-errors", "%s", why);
+
+	/* the fill pass finds more entries than there is room for */
+	n = prusim_stim_parse("0 1\n1 2\n2 3\n", 12, &st, err, sizeof(err));
+	check(n == -ENOSPC && !strcmp(err, "line 3: more entries than the 2 counted") &&
+	      st.count == 2 && cycles[1] == 1, "stim-enospc", "returned %d '%s'", n, err);
+
+	/* a short error buffer is truncated, not overrun */
+	memset(err, 'x', sizeof(err));
+	n = prusim_stim_parse("0 1\n0 2\n", 8, NULL, err, 6);
+	check(n == -EINVAL && !strcmp(err, "line ") && err[6] == 'x', "stim-short-err",
+	      "returned %d '%.8s'", n, err);
+	n = prusim_stim_parse("0 1\n0 2\n", 8, NULL, NULL, 0);
+	check(n == -EINVAL, "stim-no-err-buffer", "returned %d", n);
+}
+
+/* Random texts: both passes agree, accepted texts are well formed, no crash */
+static void test_stim_fuzz(void)
+{
+	static const char alphabet[] = "0123456789xXaAfFgG \t\r\n\n\n#-repeat\v\0";
+	u64 cycles[STIM_CAP];
+	u32 values[STIM_CAP];
+	struct prusim_stim st;
+	char text[80], err[96], why[256] = "";
+	unsigned int seed = 12345, round, accepted = 0, rejected = 0;
+	size_t len, i, j;
+	int n;
+
+	for (round = 0; round < 200000 && !why[0]; round++) {
+		seed = seed * 1103515245 + 12345;
+		len = (seed >> 16) % sizeof(text);
+		for (i = 0; i < len; i++) {
+			seed = seed * 1103515245 + 12345;
+			text[i] = alphabet[(seed >> 16) % (sizeof(alphabet) - 1)];
+		}
+		/* make valid lines likely too */
+		if (round & 1)
+			memcpy(text, "0 1\n", len < 4 ? len : 4);
+		n = stim_parse2(text, len, &st, cycles, values, err, sizeof(err));
+		if (n == -EPROTO) {
+			snprintf(why, sizeof(why), "round %u: the passes disagree", round);
+		} else if (n >= 0) {
+			const char *bad = NULL;
+
+			accepted++;
+			for (j = 1; j < (size_t)n; j++) {
+				if (cycles[j] <= cycles[j - 1])
+					bad = "cycles not increasing";
+			}
+			if (st.period && (cycles[0] || cycles[n - 1] >= st.period))
+				bad = "bad period accepted";
+			if (err[0])
+				bad = "error text on success";
+			if (bad)
+				snprintf(why, sizeof(why), "round %u: %s", round, bad);
+		} else {
+			rejected++;
+			if (strncmp(err, "line ", 5))
+				snprintf(why, sizeof(why), "round %u: error '%s'", round, err);
+		}
+	}
+	check(!why[0] && accepted > 1000 && rejected > 1000, "stim-fuzz",
+	      "%s (%u accepted, %u rejected)", why, accepted, rejected);
+}
+
 int main(int argc, char **argv)
 {
 	if (argc != 4) {
@@ -398,5 +971,10 @@ int main(int argc, char **argv)
 	test_host_access();
 	test_events();
 	test_input_calls();
+	test_input_changed();
+	test_skip_fuzz(150);
+	test_stim_lookup();
+	test_stim_errors();
+	test_stim_fuzz();
 	return failures ? 1 : 0;
 }

@@ -12,8 +12,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fileio.h"
+#include "pinlog.h"
 #include "prusim.h"
 #include "stimulus.h"
+#include "trace.h"
 #include "vcd.h"
 
 #define ARRAY_SIZE(a)		(sizeof(a) / sizeof((a)[0]))
@@ -53,8 +56,12 @@ struct host_irq {
  * @sim: the simulator (large: heap allocated)
  * @input: stimulus of each input port (R31 of each core, GPIO DATAIN)
  * @has_input: a stimulus file was given for the port
- * @vcd: pin changes, when --vcd is given
- * @vcd_path: VCD output file
+ * @log: pin changes, when @record is set
+ * @record: keep the pin changes (for --vcd, --events or --trace-out)
+ * @vcd_path: VCD output file (--vcd)
+ * @events_path: text event list (--events)
+ * @trace_out: binary pin trace output file (--trace-out)
+ * @trace_in: binary pin trace to convert (--trace-in)
  * @ddr: host memory behind OCP addresses from 0x80000000
  * @ddr_size: its size
  * @irqs: host interrupt changes
@@ -65,10 +72,14 @@ struct host_irq {
  */
 struct tool {
 	struct prusim *sim;
-	struct stimulus input[PRUSIM_NUM_PORTS];
+	struct prusim_stim input[PRUSIM_NUM_PORTS];
 	bool has_input[PRUSIM_NUM_PORTS];
-	struct vcd vcd;
+	struct pin_log log;
+	bool record;
 	const char *vcd_path;
+	const char *events_path;
+	const char *trace_out;
+	const char *trace_in;
 	uint8_t *ddr;
 	uint64_t ddr_size;
 	struct host_irq irqs[MAX_HOST_IRQS];
@@ -83,7 +94,7 @@ static void on_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
 	struct tool *t = ctx;
 
 	t->pin_changes++;
-	if (t->vcd_path && vcd_record(&t->vcd, cycle, pin, level))
+	if (t->record && pin_log_add(&t->log, cycle, pin, level))
 		t->error = true;
 }
 
@@ -92,7 +103,7 @@ static u32 on_input(void *ctx, unsigned int port, u64 cycle, u64 *next)
 	struct tool *t = ctx;
 
 	if (port < PRUSIM_NUM_PORTS && t->has_input[port])
-		return stimulus_value(&t->input[port], cycle, next);
+		return prusim_stim_value(&t->input[port], cycle, next);
 	*next = PRUSIM_NEVER;
 	return 0;
 }
@@ -140,28 +151,6 @@ static void on_trace(void __always_unused *ctx, u64 cycle, unsigned int core, u3
 
 	prusim_disasm(text, sizeof(text), insn, pc * 4);
 	printf("%llu pru%u %04x: %08x  %s\n", (unsigned long long)cycle, core, pc * 4, insn, text);
-}
-
-static void *read_file(const char *path, size_t *size)
-{
-	FILE *f = fopen(path, "rb");
-	void *buf = NULL;
-	long n = -1;
-
-	if (!f)
-		return NULL;
-	if (!fseek(f, 0, SEEK_END))
-		n = ftell(f);
-	if (n >= 0 && !fseek(f, 0, SEEK_SET)) {
-		buf = malloc(n ? n : 1);
-		if (buf && fread(buf, 1, n, f) != (size_t)n) {
-			free(buf);
-			buf = NULL;
-		}
-		*size = n;
-	}
-	fclose(f);
-	return buf;
 }
 
 /* Print the executable sections like "pru-objdump -d" (without symbols). */
@@ -362,9 +351,50 @@ static void print_usage(void)
 {
 	fprintf(stderr,
 		"usage: prusim [--pru0 FW.elf] [--pru1 FW.elf] [--max-cycles N] [--until-halt]\n"
-		"              [--vcd FILE] [--r31-0 FILE] [--r31-1 FILE] [--gpio-in BANK:FILE]\n"
+		"              [--r31-0 FILE] [--r31-1 FILE] [--gpio-in BANK:FILE]\n"
 		"              [--ddr SIZE] [--event CYCLE:EVENT]... [-C NAME=VALUE]...\n"
-		"              [--no-skip] [--trace] [--json]\n");
+		"              [--vcd FILE] [--events FILE] [--trace-out FILE]\n"
+		"              [--no-skip] [--trace] [--json]\n"
+		"       prusim --trace-in TRACE [--vcd FILE] [--events FILE]\n");
+}
+
+/* Write what was asked for from @t->log; 0 or EXIT_USAGE */
+static int write_outputs(struct tool *t)
+{
+	int ret = 0;
+
+	if (t->vcd_path && vcd_write(&t->log, t->vcd_path)) {
+		fprintf(stderr, "prusim: %s: cannot write\n", t->vcd_path);
+		ret = EXIT_USAGE;
+	}
+	if (t->events_path && events_write(&t->log, t->events_path)) {
+		fprintf(stderr, "prusim: %s: cannot write\n", t->events_path);
+		ret = EXIT_USAGE;
+	}
+	if (t->trace_out && trace_write(&t->log, t->trace_out)) {
+		fprintf(stderr, "prusim: %s: cannot write\n", t->trace_out);
+		ret = EXIT_USAGE;
+	}
+	return ret;
+}
+
+/* --trace-in: convert a binary pin trace to VCD and/or an event list */
+static int convert_trace(struct tool *t)
+{
+	char err[256];
+	int ret;
+
+	if (trace_read(&t->log, t->trace_in, err, sizeof(err))) {
+		fprintf(stderr, "prusim: %s\n", err);
+		return EXIT_USAGE;
+	}
+	if (t->log.dropped)
+		fprintf(stderr, "prusim: %s: warning: %llu older pin changes were dropped; %s\n",
+			t->trace_in, (unsigned long long)t->log.dropped,
+			"levels before the first record are unknown");
+	ret = write_outputs(t);
+	pin_log_free(&t->log);
+	return ret;
 }
 
 /* Run to @end, raising the scheduled events on the way. */
@@ -405,6 +435,9 @@ int main(int argc, char **argv)
 		{ "max-cycles", required_argument, NULL, 'm' },
 		{ "until-halt", no_argument, NULL, 'u' },
 		{ "vcd", required_argument, NULL, 'v' },
+		{ "events", required_argument, NULL, 'E' },
+		{ "trace-out", required_argument, NULL, 'o' },
+		{ "trace-in", required_argument, NULL, 'i' },
 		{ "r31-0", required_argument, NULL, 'a' },
 		{ "r31-1", required_argument, NULL, 'b' },
 		{ "gpio-in", required_argument, NULL, 'g' },
@@ -428,7 +461,7 @@ int main(int argc, char **argv)
 	struct kick kicks[MAX_EVENTS];
 	unsigned int nkicks = 0, i;
 	uint64_t max_cycles = DEFAULT_MAX_CYCLES;
-	bool until_halt = false, json = false;
+	bool until_halt = false, json = false, run_only = false;
 	struct prusim_config cfg;
 	struct prusim_ops run_ops = ops;
 	char err[256];
@@ -436,6 +469,9 @@ int main(int argc, char **argv)
 
 	prusim_default_config(&cfg);
 	while ((opt = getopt_long(argc, argv, "C:", opts, NULL)) != -1) {
+		/* everything but --vcd, --events and --trace-in needs a run */
+		if (opt != 'v' && opt != 'E' && opt != 'i')
+			run_only = true;
 		switch (opt) {
 		case '0':
 		case '1':
@@ -450,6 +486,15 @@ int main(int argc, char **argv)
 			break;
 		case 'v':
 			t.vcd_path = optarg;
+			break;
+		case 'E':
+			t.events_path = optarg;
+			break;
+		case 'o':
+			t.trace_out = optarg;
+			break;
+		case 'i':
+			t.trace_in = optarg;
 			break;
 		case 'a':
 		case 'b':
@@ -491,8 +536,23 @@ int main(int argc, char **argv)
 			goto bad;
 		}
 	}
-	if (optind != argc || (!fw[0] && !fw[1]))
+	if (optind != argc)
 		goto bad;
+	if (t.trace_in) {
+		if (run_only || (!t.vcd_path && !t.events_path)) {
+			fprintf(stderr, "prusim: --trace-in converts a trace: %s\n",
+				"it takes --vcd and/or --events and nothing else");
+			ret = EXIT_USAGE;
+		} else {
+			ret = convert_trace(&t);
+		}
+		for (i = 0; i < PRUSIM_NUM_PORTS; i++)
+			stimulus_free(&t.input[i]);
+		return ret;
+	}
+	if (!fw[0] && !fw[1])
+		goto bad;
+	t.record = t.vcd_path || t.events_path || t.trace_out;
 
 	if (t.trace) {
 		run_ops.trace = on_trace;
@@ -530,15 +590,15 @@ int main(int argc, char **argv)
 		fprintf(stderr, "prusim: out of memory while tracing\n");
 		ret = EXIT_USAGE;
 	}
-	if (t.vcd_path && vcd_write(&t.vcd, t.vcd_path, t.sim->now)) {
-		fprintf(stderr, "prusim: %s: cannot write\n", t.vcd_path);
+	t.log.origin = 0;
+	t.log.end = t.sim->now;
+	if (write_outputs(&t))
 		ret = EXIT_USAGE;
-	}
 	if (json)
 		print_json(&t);
 	for (i = 0; i < PRUSIM_NUM_PORTS; i++)
 		stimulus_free(&t.input[i]);
-	vcd_free(&t.vcd);
+	pin_log_free(&t.log);
 	free(t.ddr);
 	free(t.sim);
 	return ret;

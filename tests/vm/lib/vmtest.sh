@@ -5,17 +5,87 @@ vmtest_failed=0
 
 # check NAME CMD... - run CMD, print PASS/FAIL NAME
 check() {
-	name=$1
+	local check_name=$1
 	shift
 	if "$@" >/tmp/check.out 2>&1; then
-		echo "PASS: $name"
+		echo "PASS: $check_name"
 	else
-		echo "FAIL: $name"
+		echo "FAIL: $check_name"
 		sed 's/^/    /' /tmp/check.out | head -n 20
 		vmtest_failed=1
 	fi
 }
 
+fail() {
+	echo "FAIL: $*"
+	vmtest_failed=1
+}
+
+pass() {
+	echo "PASS: $*"
+}
+
 done_testing() {
 	exit $vmtest_failed
+}
+
+# The simulated PRU-ICSS's debugfs directory.
+sim_dir() {
+	local d
+	for d in /sys/kernel/debug/pru_sim/*/; do
+		[ -e "$d/stats" ] && { echo "${d%/}"; return 0; }
+	done
+	return 1
+}
+
+# pru_rproc N - the remoteproc sysfs directory of simulated PRU N.
+pru_rproc() {
+	local iram r
+	case $1 in 0) iram=34000 ;; 1) iram=38000 ;; *) return 1 ;; esac
+	for r in /sys/class/remoteproc/remoteproc*; do
+		case $(readlink -f "$r/device") in
+		*pru@$iram) echo "$r"; return 0 ;;
+		esac
+	done
+	return 1
+}
+
+# pru_state N - state of PRU N in the simulator (disabled/running/halted...)
+pru_state() {
+	sed -n "s/^pru$1 state \([a-z]*\) .*/\1/p" "$(sim_dir)/stats"
+}
+
+# wait_pru_state N STATE [SECONDS] - until the simulator reports STATE
+wait_pru_state() {
+	local i=0
+	while [ "$(pru_state "$1")" != "$2" ]; do
+		i=$((i + 1))
+		[ $i -gt $((${3:-60} * 10)) ] && return 1
+		sleep 0.1
+	done
+}
+
+# rproc_run N FIRMWARE - stop PRU N if it runs, then start FIRMWARE
+# (a path relative to /lib/firmware) through remoteproc sysfs.
+rproc_run() {
+	local r
+	r=$(pru_rproc "$1") || return 1
+	[ "$(cat "$r/state")" = running ] && echo stop >"$r/state"
+	echo "$2" >"$r/firmware" && echo start >"$r/state"
+}
+
+rproc_stop() {
+	local r
+	r=$(pru_rproc "$1") || return 1
+	[ "$(cat "$r/state")" = running ] && echo stop >"$r/state"
+	return 0
+}
+
+# The test consumer's device directory in sysfs.
+consumer_dir() {
+	local d
+	for d in /sys/bus/platform/drivers/pru_test_consumer/*/; do
+		[ -e "$d/irq_count" ] && { echo "${d%/}"; return 0; }
+	done
+	return 1
 }

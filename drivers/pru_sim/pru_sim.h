@@ -1,0 +1,151 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * pru_sim - a simulated AM335x PRU-ICSS (shared definitions of the driver)
+ */
+#ifndef PRU_SIM_H
+#define PRU_SIM_H
+
+#include <linux/atomic.h>
+#include <linux/interrupt.h>
+#include <linux/debugfs.h>
+#include <linux/irq_work.h>
+#include <linux/kthread.h>
+#include <linux/mutex.h>
+#include <linux/remoteproc.h>
+#include <linux/wait.h>
+
+#include "prusim.h"
+#include "prusim_stim.h"
+#include "prusim_trace.h"
+
+struct irq_domain;
+struct pru_sim;
+
+/*
+ * Exported by the remoteproc core (remoteproc_virtio.c) but declared only
+ * in drivers/remoteproc/remoteproc_internal.h, which a driver built outside
+ * the kernel tree cannot include; unchanged from v3.4 to v6.12.
+ */
+irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
+
+/**
+ * struct pru_sim_core - one simulated PRU core, as a remote processor
+ * @sim: the PRU-ICSS it belongs to
+ * @dev: the core's platform device (parent of @rproc)
+ * @rproc: the remote processor
+ * @index: 0 for PRU0, 1 for PRU1
+ * @vring_irq: Linux interrupt of the PRU -> ARM "vring" event, or 0
+ * @kick_irq: Linux interrupt whose pending state is the ARM -> PRU "kick"
+ *	event, or 0 (then the core has no kick, as with mainline pru_rproc)
+ * @elf: what the loader found in the current firmware
+ */
+struct pru_sim_core {
+	struct pru_sim *sim;
+	struct device *dev;
+	struct rproc *rproc;
+	unsigned int index;
+	int vring_irq;
+	int kick_irq;
+	struct prusim_elf_info elf;
+};
+
+/**
+ * struct pru_sim_input - stimulus of one input port
+ * @sim: the PRU-ICSS
+ * @port: PRUSIM_PORT_R31() or PRUSIM_PORT_GPIO() number
+ * @stim: the pattern; @stim.count == 0 means the port reads 0
+ * @origin: simulator cycle that the pattern's cycle 0 corresponds to
+ * @pending_origin: the pattern starts at the next core start
+ */
+struct pru_sim_input {
+	struct pru_sim *sim;
+	unsigned int port;
+	struct prusim_stim stim;
+	u64 origin;
+	bool pending_origin;
+};
+
+/**
+ * struct pru_sim_trace - ring of recent output pin changes
+ * @rec: PRU_SIM_TRACE_LEN records
+ * @head: index of the next record to write
+ * @count: valid records (at most PRU_SIM_TRACE_LEN)
+ * @dropped: records overwritten since the last clear
+ * @origin: cycle of the last core start
+ */
+struct pru_sim_trace {
+	struct prusim_trace_rec *rec;
+	unsigned int head;
+	unsigned int count;
+	u64 dropped;
+	u64 origin;
+};
+
+#define PRU_SIM_TRACE_LEN	BIT(18)
+
+/**
+ * struct pru_sim - one simulated PRU-ICSS
+ * @dev: the "prukit,pruss-sim" platform device
+ * @lock: serialises every use of @s and the state below it
+ * @s: the simulator (vmalloc'ed)
+ * @core: the two PRU cores; NULL until their devices probe
+ * @thread: runs the simulation in slices
+ * @wq: @thread sleeps here while no core runs or all only wait
+ * @work: set (and @wq woken) when there may be something to run
+ * @raise: system events to raise in the simulator before the next slice
+ *	(kicks; set from any context)
+ * @domain: interrupt domain of the INTC (hwirq = system event)
+ * @irq_work: delivers @to_arm events to Linux in hard interrupt context
+ * @to_arm: system events for the ARM, taken from the INTC, not yet delivered
+ * @masked: system events whose Linux interrupt is masked
+ * @mapped: system events that have a Linux interrupt
+ * @ram_bus: PRU bus address at which the ARM's RAM appears (dma-ranges)
+ * @ram_phys: CPU physical address of that RAM
+ * @ram_size: its size
+ * @ocp_err: the reason of the last refused OCP access
+ * @input: stimulus per input port (PRUSIM_PORT_*)
+ * @trace: pin trace
+ * @slice_cycles: cycles simulated per slice
+ * @host_ns: host time spent simulating, for the statistics
+ * @debugfs: debugfs directory
+ */
+struct pru_sim {
+	struct device *dev;
+	struct mutex lock;		/* protects @s and everything below it */
+	struct prusim *s;
+	struct pru_sim_core *core[PRUSIM_NUM_CORES];
+	struct task_struct *thread;
+	wait_queue_head_t wq;
+	atomic_t work;
+	atomic64_t raise;
+	struct irq_domain *domain;
+	struct irq_work irq_work;
+	atomic64_t to_arm;
+	atomic64_t masked;
+	u64 mapped;
+	u64 ram_bus;
+	phys_addr_t ram_phys;
+	u64 ram_size;
+	char ocp_err[PRUSIM_REASON_LEN];
+	struct pru_sim_input input[PRUSIM_NUM_PORTS];
+	struct pru_sim_trace trace;
+	u64 slice_cycles;
+	u64 host_ns;
+	struct dentry *debugfs;
+};
+
+void pru_sim_kick_thread(struct pru_sim *sim);
+
+int pru_sim_intc_init(struct pru_sim *sim, struct device_node *np);
+void pru_sim_intc_exit(struct pru_sim *sim);
+void pru_sim_intc_collect(struct pru_sim *sim);
+
+void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root);
+void pru_sim_trace_pin(struct pru_sim *sim, u64 cycle, unsigned int pin, bool level);
+u32 pru_sim_input(struct pru_sim *sim, unsigned int port, u64 cycle, u64 *next_change);
+void pru_sim_core_started(struct pru_sim *sim);
+void pru_sim_inputs_free(struct pru_sim *sim);
+
+extern struct platform_driver pru_sim_core_driver;
+
+#endif /* PRU_SIM_H */

@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * pru_sim - a simulated AM335x PRU-ICSS, in the spirit of mac80211_hwsim
+ *
+ * The "prukit,pruss-sim" device tree node is laid out like the real PRU-ICSS:
+ * two PRU cores (children "prukit,pru-sim", registered as remote processors
+ * that consumers find through "ti,prus" phandles) and an interrupt controller
+ * (child "prukit,pruss-sim-intc", three cells as the TI PRUSS INTC: system
+ * event, channel, host interrupt).  The real firmware runs, cycle by cycle,
+ * in the prusim core (sim/), the same code as the prusim host tool, in a
+ * kernel thread.  OCP master port accesses reach the ARM's RAM through the
+ * node's dma-ranges, so buffers allocated with the DMA API are what the
+ * firmware reads and writes.  debugfs has the pin trace, input stimulus and
+ * statistics (Documentation/pru_sim.rst).
+ *
+ * This file: the PRU-ICSS device, the simulation thread and the OCP port.
+ */
+#define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
+
+#include <linux/highmem.h>
+#include <linux/io.h>
+#include <linux/ktime.h>
+#include <linux/mm.h>
+#include <linux/module.h>
+#include <linux/of.h>
+#include <linux/of_address.h>
+#include <linux/of_platform.h>
+#include <linux/platform_device.h>
+#include <linux/sched.h>
+#include <linux/slab.h>
+#include <linux/vmalloc.h>
+
+#include "compat.h"
+#include "pru_sim.h"
+
+/*
+ * Cycles per slice while a core does real work.  The lock is held for a
+ * slice, so this bounds how long a kick or a remoteproc operation waits.
+ */
+#define PRU_SIM_SLICE		20000
+/* When every core only waits, a slice skips ahead this far at no cost. */
+#define PRU_SIM_IDLE_SLICE	200000000ULL
+
+static struct dentry *pru_sim_debugfs_root;
+
+static unsigned int slice_cycles = PRU_SIM_SLICE;
+module_param(slice_cycles, uint, 0444);
+MODULE_PARM_DESC(slice_cycles, "PRU cycles simulated between scheduling points (default 20000)");
+
+void pru_sim_kick_thread(struct pru_sim *sim)
+{
+	atomic_set(&sim->work, 1);
+	wake_up(&sim->wq);
+}
+
+/*
+ * OCP master port: addresses in the dma-ranges window are the ARM's RAM,
+ * reached page by page; anything else stops the core.
+ */
+static int pru_sim_ocp_access(struct pru_sim *sim, u32 addr, void *buf,
+			      unsigned int len, bool write)
+{
+	u64 off = (u64)addr - sim->ram_bus;
+	phys_addr_t phys;
+
+	if (addr < sim->ram_bus || off + len > sim->ram_size) {
+		snprintf(sim->ocp_err, sizeof(sim->ocp_err),
+			 "OCP %s of %u bytes at 0x%08x is outside RAM", write ? "write" : "read",
+			 len, addr);
+		return -EFAULT;
+	}
+
+	phys = sim->ram_phys + off;
+	while (len) {
+		unsigned int chunk = min_t(unsigned int, len, PAGE_SIZE - offset_in_page(phys));
+		unsigned long pfn = PHYS_PFN(phys);
+		void *va;
+
+		if (!pfn_valid(pfn)) {
+			snprintf(sim->ocp_err, sizeof(sim->ocp_err),
+				 "OCP access at 0x%08x: no RAM at %pa", addr, &phys);
+			return -EFAULT;
+		}
+		va = prukit_kmap_local_page(pfn_to_page(pfn));
+		if (write)
+			memcpy(va + offset_in_page(phys), buf, chunk);
+		else
+			memcpy(buf, va + offset_in_page(phys), chunk);
+		prukit_kunmap_local(va);
+		buf += chunk;
+		phys += chunk;
+		len -= chunk;
+	}
+	return 0;
+}
+
+static int pru_sim_ocp_read(void *ctx, u32 addr, void *buf, unsigned int len)
+{
+	return pru_sim_ocp_access(ctx, addr, buf, len, false);
+}
+
+static int pru_sim_ocp_write(void *ctx, u32 addr, const void *buf, unsigned int len)
+{
+	return pru_sim_ocp_access(ctx, addr, (void *)buf, len, true);
+}
+
+static void pru_sim_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
+{
+	pru_sim_trace_pin(ctx, cycle, pin, level);
+}
+
+static u32 pru_sim_input_cb(void *ctx, unsigned int port, u64 cycle, u64 *next_change)
+{
+	return pru_sim_input(ctx, port, cycle, next_change);
+}
+
+static void pru_sim_host_irq(void *ctx, u64 cycle, unsigned int host, bool level)
+{
+	/* The INTC is read after the slice; see pru_sim_intc_collect(). */
+}
+
+static const struct prusim_ops pru_sim_ops = {
+	.pin = pru_sim_pin,
+	.input = pru_sim_input_cb,
+	.host_irq = pru_sim_host_irq,
+	.ocp_read = pru_sim_ocp_read,
+	.ocp_write = pru_sim_ocp_write,
+};
+
+static u64 pru_sim_insns(struct pru_sim *sim)
+{
+	return sim->s->core[0].insns + sim->s->core[1].insns;
+}
+
+/* Log why a core stopped, once. */
+static void pru_sim_report_stops(struct pru_sim *sim, bool *reported)
+{
+	unsigned int i;
+
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		struct prusim_status st;
+
+		prusim_get_status(sim->s, i, &st);
+		if (st.state != PRUSIM_STOPPED) {
+			reported[i] = false;
+			continue;
+		}
+		if (!reported[i])
+			dev_err(sim->dev, "PRU%u stopped at pc 0x%x: %s%s%s\n", i, st.pc * 4,
+				st.reason, sim->ocp_err[0] ? ": " : "", sim->ocp_err);
+		reported[i] = true;
+	}
+}
+
+/*
+ * The simulation thread: run slices while a core has work; sleep while
+ * every core is disabled, halted or only waiting (the simulator skips such
+ * waits at no cost, so a slice that executed next to nothing means that
+ * only an outside event - a kick, new input, a start - can change things).
+ */
+static int pru_sim_thread(void *data)
+{
+	struct pru_sim *sim = data;
+	bool reported[PRUSIM_NUM_CORES] = { };
+
+	while (!kthread_should_stop()) {
+		u64 raise, insns, ran, slice;
+		bool busy;
+		ktime_t t0;
+
+		wait_event(sim->wq, atomic_xchg(&sim->work, 0) || kthread_should_stop());
+
+		do {
+			mutex_lock(&sim->lock);
+			raise = atomic64_xchg(&sim->raise, 0);
+			while (raise) {
+				unsigned int ev = __ffs64(raise);
+
+				prusim_raise_event(sim->s, ev);
+				raise &= raise - 1;
+			}
+			busy = prusim_active(sim->s);
+			if (busy) {
+				slice = sim->slice_cycles;
+				insns = pru_sim_insns(sim);
+				t0 = ktime_get();
+				ran = prusim_run(sim->s, slice);
+				sim->host_ns += ktime_to_ns(ktime_sub(ktime_get(), t0));
+				insns = pru_sim_insns(sim) - insns;
+				/* Mostly skipped: every core waits for the outside. */
+				if (insns < ran / 64) {
+					busy = false;
+					sim->slice_cycles = PRU_SIM_IDLE_SLICE;
+				} else {
+					sim->slice_cycles = slice_cycles;
+				}
+				pru_sim_intc_collect(sim);
+				pru_sim_report_stops(sim, reported);
+			}
+			mutex_unlock(&sim->lock);
+			cond_resched();
+		} while (busy && !kthread_should_stop() && !atomic_read(&sim->work));
+
+		if (busy)
+			atomic_set(&sim->work, 1);
+	}
+	return 0;
+}
+
+/* The RAM window of the OCP port, from the node's single dma-ranges entry. */
+static int pru_sim_parse_dma_ranges(struct pru_sim *sim, struct device_node *np)
+{
+	const __be32 *prop;
+	u32 na, ns;
+	int pna, len;
+
+	/* Bus addresses use our cells, CPU addresses our parent's. */
+	if (of_property_read_u32(np, "#address-cells", &na) ||
+	    of_property_read_u32(np, "#size-cells", &ns) || na > 2 || ns > 2)
+		return dev_err_probe(sim->dev, -EINVAL, "bad #address-cells/#size-cells\n");
+	pna = of_n_addr_cells(np);
+	prop = of_get_property(np, "dma-ranges", &len);
+	if (!prop || len != (na + pna + ns) * sizeof(__be32))
+		return dev_err_probe(sim->dev, -EINVAL,
+				     "dma-ranges must hold one <bus cpu size> entry\n");
+	sim->ram_bus = of_read_number(prop, na);
+	sim->ram_phys = of_read_number(prop + na, pna);
+	sim->ram_size = of_read_number(prop + na + pna, ns);
+	if (!sim->ram_size || sim->ram_bus + sim->ram_size > SZ_4G)
+		return dev_err_probe(sim->dev, -EINVAL, "dma-ranges window outside 32 bits\n");
+	return 0;
+}
+
+static void pru_sim_free_state(void *data)
+{
+	struct pru_sim *sim = data;
+
+	pru_sim_inputs_free(sim);
+	vfree(sim->trace.rec);
+	vfree(sim->s);
+}
+
+static void pru_sim_stop_thread(void *data)
+{
+	struct pru_sim *sim = data;
+
+	kthread_stop(sim->thread);
+}
+
+static void pru_sim_depopulate(void *data)
+{
+	struct pru_sim *sim = data;
+
+	of_platform_depopulate(sim->dev);
+}
+
+static void pru_sim_remove_debugfs(void *data)
+{
+	struct pru_sim *sim = data;
+
+	debugfs_remove_recursive(sim->debugfs);
+}
+
+static int pru_sim_probe(struct platform_device *pdev)
+{
+	struct device *dev = &pdev->dev;
+	struct device_node *np = dev->of_node;
+	struct pru_sim *sim;
+	int ret;
+
+	sim = devm_kzalloc(dev, sizeof(*sim), GFP_KERNEL);
+	if (!sim)
+		return -ENOMEM;
+	sim->dev = dev;
+	mutex_init(&sim->lock);
+	init_waitqueue_head(&sim->wq);
+	sim->slice_cycles = slice_cycles ?: PRU_SIM_SLICE;
+
+	ret = pru_sim_parse_dma_ranges(sim, np);
+	if (ret)
+		return ret;
+
+	sim->s = vzalloc(sizeof(*sim->s));
+	sim->trace.rec = vzalloc(array_size(PRU_SIM_TRACE_LEN, sizeof(*sim->trace.rec)));
+	ret = devm_add_action_or_reset(dev, pru_sim_free_state, sim);
+	if (ret)
+		return ret;
+	if (!sim->s || !sim->trace.rec)
+		return -ENOMEM;
+	prusim_init(sim->s, NULL, &pru_sim_ops, sim);
+
+	ret = pru_sim_intc_init(sim, np);
+	if (ret)
+		return ret;
+
+	sim->thread = kthread_run(pru_sim_thread, sim, "pru_sim/%s", dev_name(dev));
+	if (IS_ERR(sim->thread))
+		return dev_err_probe(dev, PTR_ERR(sim->thread), "cannot start the thread\n");
+	ret = devm_add_action_or_reset(dev, pru_sim_stop_thread, sim);
+	if (ret)
+		return ret;
+
+	platform_set_drvdata(pdev, sim);
+	pru_sim_debugfs_init(sim, pru_sim_debugfs_root);
+	ret = devm_add_action_or_reset(dev, pru_sim_remove_debugfs, sim);
+	if (ret)
+		return ret;
+
+	/* The cores and the INTC are child devices, as on the real PRU-ICSS. */
+	ret = of_platform_populate(np, NULL, NULL, dev);
+	if (ret)
+		return dev_err_probe(dev, ret, "cannot create the PRU core devices\n");
+	ret = devm_add_action_or_reset(dev, pru_sim_depopulate, sim);
+	if (ret)
+		return ret;
+
+	dev_info(dev, "simulated PRU-ICSS, RAM at PRU address 0x%llx\n", sim->ram_bus);
+	return 0;
+}
+
+static const struct of_device_id pru_sim_of_match[] = {
+	{ .compatible = "prukit,pruss-sim" },
+	{ }
+};
+MODULE_DEVICE_TABLE(of, pru_sim_of_match);
+
+static struct platform_driver pru_sim_driver = {
+	.probe = pru_sim_probe,
+	.driver = {
+		.name = "pru_sim",
+		.of_match_table = pru_sim_of_match,
+	},
+};
+
+static int __init pru_sim_init(void)
+{
+	int ret;
+
+	pru_sim_debugfs_root = debugfs_create_dir("pru_sim", NULL);
+	ret = platform_driver_register(&pru_sim_core_driver);
+	if (ret)
+		goto remove_debugfs;
+	ret = platform_driver_register(&pru_sim_driver);
+	if (ret)
+		goto unregister_core;
+	return 0;
+
+unregister_core:
+	platform_driver_unregister(&pru_sim_core_driver);
+remove_debugfs:
+	debugfs_remove(pru_sim_debugfs_root);
+	return ret;
+}
+module_init(pru_sim_init);
+
+static void __exit pru_sim_exit(void)
+{
+	platform_driver_unregister(&pru_sim_driver);
+	platform_driver_unregister(&pru_sim_core_driver);
+	debugfs_remove(pru_sim_debugfs_root);
+}
+module_exit(pru_sim_exit);
+
+MODULE_DESCRIPTION("Simulated AM335x PRU-ICSS: remote processors running firmware in prusim");
+MODULE_AUTHOR("prukit developers");
+MODULE_LICENSE("GPL");
