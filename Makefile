@@ -13,6 +13,7 @@
 #   make kunit            KUnit suites on UML with KASAN and lockdep
 #   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
+#   make demo             the emulated BeagleBone runs PRU firmware; see its pins
 #   make bench            simulator benchmarks
 #   make check            everything CI runs; ends with "N passed, N failed"
 
@@ -27,7 +28,7 @@ BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install \
-	overlays overlays_install udev_install kernels tools kunit vmtest vmrun checkpatch bench check version
+	overlays overlays_install udev_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
 
@@ -86,6 +87,9 @@ vmrun:
 
 checkpatch:
 	$(SCRIPTS)/checkpatch.sh
+
+demo:
+	$(SCRIPTS)/demo.sh
 
 bench: tools
 	tests/prusim/bench.sh

@@ -55,6 +55,7 @@ step overlays scripts/overlays.sh
 step dkms scripts/dkms-test.sh
 step prusim prusim_check
 step kunit scripts/kunit.sh
+step vmtest scripts/vm.sh test "5.10 6.1 6.12"
 
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"
 echo "$passed passed, $failed failed"
