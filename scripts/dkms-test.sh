@@ -19,7 +19,7 @@ src=$work/source/prukit-$ver
 # What a release tarball (or a dkms-managed /usr/src/prukit-VER) holds.
 mkdir -p "$src"
 (cd "$PRUKIT_TOP" && git ls-files --cached --others --exclude-standard -- \
-	Kbuild Makefile dkms.conf include drivers | xargs cp --parents -t "$src")
+	Kbuild Makefile dkms.conf include drivers sim | xargs cp --parents -t "$src")
 
 dkms=(dkms --dkmstree "$work/tree" --sourcetree "$work/source" --installtree "$work/install")
 export ARCH=arm CROSS_COMPILE=arm-linux-gnueabihf-
@@ -56,4 +56,28 @@ for name in $names; do
 		failed=1
 	fi
 done
+
+# make install into a staging directory, as a package build would do it.
+stage=$work/install-root
+rm -rf "$stage"
+make -s -C "$PRUKIT_TOP" firmware >/dev/null
+ls "$PRUKIT_TOP"/out/overlays/*.dtbo >/dev/null 2>&1 || "$PRUKIT_TOP/scripts/overlays.sh" >/dev/null
+if make -s -C "$PRUKIT_TOP" modules KDIR="$kdir" >"$work/install.log" 2>&1 &&
+   make -s -C "$PRUKIT_TOP" install KDIR="$kdir" DESTDIR="$stage" >>"$work/install.log" 2>&1; then
+	for f in "lib/modules/$kver/updates/drivers/rpmsg_pru/rpmsg_pru.ko" \
+		 "lib/firmware/prukit/rpmsg-echo-pru0.elf" "lib/firmware/PRUKIT-RPMSG-00A0.dtbo" \
+		 "etc/udev/rules.d/60-prukit.rules"; do
+		if [ -n "$(find "$stage" -path "$stage/${f%.ko}*" -print -quit)" ]; then
+			echo "PASS: make install puts /$f"
+		else
+			echo "FAIL: make install puts /$f"
+			failed=1
+		fi
+	done
+else
+	tail -n 20 "$work/install.log"
+	echo "FAIL: make install DESTDIR=... (see $work/install.log)"
+	failed=1
+fi
+make -s -C "$kdir" M="$PRUKIT_TOP" clean >/dev/null 2>&1 || true
 exit $failed

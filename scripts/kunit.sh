@@ -20,6 +20,8 @@ grep -q '^obj-y.*+= prukit/' "$src/drivers/Makefile" ||
 	echo 'obj-y				+= prukit/' >>"$src/drivers/Makefile"
 
 mkdir -p "$build"
+# The prusim validation programs, assembled and embedded for the KUnit suite.
+"$PRUKIT_TOP/tests/kunit/prusim/gen.sh"
 log=$PRUKIT_TOP/out/kunit.log
 mkdir -p "$(dirname "$log")"
 msg "KUnit on UML (KASAN, lockdep); build dir $build, log $log"
@@ -41,6 +43,7 @@ awk '
 	}' "$log"
 
 failed=0
+grep -qE '^ *not ok [0-9]+ ' "$log" && failed=1
 cases=$(grep -cE '^ *(not )?ok [0-9]+ ' "$log" || true)
 if [ "$rc" -ne 0 ] || [ "$cases" -eq 0 ]; then
 	tail -n 30 "$log"

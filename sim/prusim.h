@@ -122,8 +122,9 @@ struct prusim_config {
  *	PRUSIM_PORT_GPIO()) at @cycle and store in @next_change the first later
  *	cycle at which it may differ (PRUSIM_NEVER if it never will).  The
  *	simulator caches the value until then, so a source that announces its
- *	changes is called once per change, not once per read.  Without this
- *	callback all inputs read 0.
+ *	changes is called once per change, not once per read; a source that
+ *	changes otherwise must be followed by prusim_input_changed().  Without
+ *	this callback all inputs read 0.
  * @host_irq: host interrupt line @host (2..9, the ones that go to the ARM)
  *	changed to @level at @cycle
  * @ocp_read: read @len bytes at OCP address @addr (not a GPIO bank) into
@@ -252,6 +253,8 @@ struct prusim_idle {
  * @ctable: constant table C0..C31 as currently programmed
  * @insns: executed instructions since prusim_init()
  * @stalls: stall cycles since prusim_init()
+ * @skipped_insns: how many of @insns idle skipping accounted for instead of
+ *	executing them
  * @r31_in: cached R31 input value (bits 0..29)
  * @r31_until: first cycle at which @r31_in may be stale
  * @xfr_wait: waiting in XIN 14 (1) or XOUT 14 (2) for the other core
@@ -289,6 +292,7 @@ struct prusim_core {
 	u32 ctable[32];
 	u64 insns;
 	u64 stalls;
+	u64 skipped_insns;
 	u32 r31_in;
 	u64 r31_until;
 	u8 xfr_wait;
@@ -441,8 +445,10 @@ struct prusim {
  * struct prusim_status - snapshot of one core for the embedder
  * @state: &enum prusim_state
  * @pc: program counter (word address)
- * @insns: instructions executed
+ * @insns: instructions executed (including those idle skipping accounted for)
  * @stalls: stall cycles
+ * @skipped_insns: how many of @insns idle skipping accounted for without
+ *	executing them (always 0 with &prusim_config.no_skip)
  * @cycle_cnt: CTRL CYCLE register
  * @stall_cnt: CTRL STALL register
  * @regs: r0..r31 (r31 as last read by the core)
@@ -453,6 +459,7 @@ struct prusim_status {
 	u32 pc;
 	u64 insns;
 	u64 stalls;
+	u64 skipped_insns;
 	u32 cycle_cnt;
 	u32 stall_cnt;
 	u32 regs[32];
@@ -491,10 +498,10 @@ u64 prusim_run(struct prusim *s, u64 max_cycles);
 bool prusim_active(const struct prusim *s);
 void prusim_get_status(const struct prusim *s, unsigned int core,
 		       struct prusim_status *st);
+void prusim_input_changed(struct prusim *s, unsigned int port);
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */
 void prusim_raise_event(struct prusim *s, unsigned int event);
-void prusim_input_changed(struct prusim *s, unsigned int port);
 bool prusim_host_pending(const struct prusim *s, unsigned int host);
 int prusim_host_read(struct prusim *s, u32 offset, void *buf, size_t len);
 int prusim_host_write(struct prusim *s, u32 offset, const void *buf, size_t len);

@@ -538,7 +538,8 @@ static void idle_watch(struct prusim *s, struct prusim_core *c, u32 target)
 			s->skip_pending = true;
 			s->attention = 0;
 		}
-	} else if (!c->dirty && c->insns - w->insns < IDLE_MAX_INSNS) {
+	} else if (w->pc != PRUSIM_NO_LOOP && !c->dirty &&
+		   c->insns - w->insns < IDLE_MAX_INSNS) {
 		return;		/* an inner branch (a call, say) of the watched loop */
 	}
 	watch_arm(s, c, target);
@@ -610,6 +611,7 @@ static void skip_core(struct prusim_core *c, u64 cycles)
 	stalls = n * c->idle.stalls;
 	c->insns += insns;
 	c->stalls += stalls;
+	c->skipped_insns += insns;
 	if (c->control & PRUSIM_CTRL_CTR_EN) {
 		/* skip_limit() keeps CYCLE below saturation */
 		c->cycle_cnt += cycles;
@@ -1550,6 +1552,7 @@ void prusim_get_status(const struct prusim *s, unsigned int core, struct prusim_
 	st->pc = c->pc;
 	st->insns = c->insns;
 	st->stalls = c->stalls;
+	st->skipped_insns = c->skipped_insns;
 	st->cycle_cnt = c->cycle_cnt;
 	st->stall_cnt = c->stall_cnt;
 	memcpy(st->regs, c->r, sizeof(st->regs));

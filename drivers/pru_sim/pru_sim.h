@@ -105,7 +105,7 @@ struct pru_sim_trace {
  * @ocp_err: the reason of the last refused OCP access
  * @input: stimulus per input port (PRUSIM_PORT_*)
  * @trace: pin trace
- * @slice_cycles: cycles simulated per slice
+ * @slice_cycles: cycles simulated per slice (module parameter slice_cycles)
  * @host_ns: host time spent simulating, for the statistics
  * @debugfs: debugfs directory
  */
@@ -143,6 +143,7 @@ void pru_sim_intc_collect(struct pru_sim *sim);
 void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root);
 void pru_sim_trace_pin(struct pru_sim *sim, u64 cycle, unsigned int pin, bool level);
 u32 pru_sim_input(struct pru_sim *sim, unsigned int port, u64 cycle, u64 *next_change);
+bool pru_sim_inputs_pending(struct pru_sim *sim);
 void pru_sim_core_started(struct pru_sim *sim);
 void pru_sim_inputs_free(struct pru_sim *sim);
 

@@ -75,6 +75,26 @@ u32 pru_sim_input(struct pru_sim *sim, unsigned int port, u64 cycle, u64 *next_c
 	return v;
 }
 
+/* Whether some input pattern still has a change to come. */
+bool pru_sim_inputs_pending(struct pru_sim *sim)
+{
+	unsigned int i;
+
+	for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
+		struct pru_sim_input *in = &sim->input[i];
+		u64 next;
+
+		if (!in->stim.count || in->pending_origin)
+			continue;
+		if (sim->s->now < in->origin)
+			return true;
+		prusim_stim_value(&in->stim, sim->s->now - in->origin, &next);
+		if (next != PRUSIM_NEVER)
+			return true;
+	}
+	return false;
+}
+
 static void pru_sim_stim_free(struct prusim_stim *st)
 {
 	kvfree(st->cycle);

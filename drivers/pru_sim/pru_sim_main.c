@@ -38,9 +38,6 @@
  * slice, so this bounds how long a kick or a remoteproc operation waits.
  */
 #define PRU_SIM_SLICE		20000
-/* When every core only waits, a slice skips ahead this far at no cost. */
-#define PRU_SIM_IDLE_SLICE	200000000ULL
-
 static struct dentry *pru_sim_debugfs_root;
 
 static unsigned int slice_cycles = PRU_SIM_SLICE;
@@ -127,9 +124,12 @@ static const struct prusim_ops pru_sim_ops = {
 	.ocp_write = pru_sim_ocp_write,
 };
 
+/* Instructions executed, not counted by skipping over a wait. */
 static u64 pru_sim_insns(struct pru_sim *sim)
 {
-	return sim->s->core[0].insns + sim->s->core[1].insns;
+	const struct prusim_core *c = sim->s->core;
+
+	return c[0].insns - c[0].skipped_insns + c[1].insns - c[1].skipped_insns;
 }
 
 /* Log why a core stopped, once. */
@@ -154,9 +154,11 @@ static void pru_sim_report_stops(struct pru_sim *sim, bool *reported)
 
 /*
  * The simulation thread: run slices while a core has work; sleep while
- * every core is disabled, halted or only waiting (the simulator skips such
- * waits at no cost, so a slice that executed next to nothing means that
- * only an outside event - a kick, new input, a start - can change things).
+ * every core is disabled, halted or only waiting for something that only
+ * the outside can bring - a kick, new input, a start.  (The simulator skips
+ * waits at no cost, so a slice that executed next to nothing means every
+ * core waits; unless an input pattern or a queued action still has a change
+ * to come, nothing inside can end the wait.)
  */
 static int pru_sim_thread(void *data)
 {
@@ -164,7 +166,7 @@ static int pru_sim_thread(void *data)
 	bool reported[PRUSIM_NUM_CORES] = { };
 
 	while (!kthread_should_stop()) {
-		u64 raise, insns, ran, slice;
+		u64 raise, insns, ran;
 		bool busy;
 		ktime_t t0;
 
@@ -181,19 +183,14 @@ static int pru_sim_thread(void *data)
 			}
 			busy = prusim_active(sim->s);
 			if (busy) {
-				slice = sim->slice_cycles;
 				insns = pru_sim_insns(sim);
 				t0 = ktime_get();
-				ran = prusim_run(sim->s, slice);
+				ran = prusim_run(sim->s, sim->slice_cycles);
 				sim->host_ns += ktime_to_ns(ktime_sub(ktime_get(), t0));
 				insns = pru_sim_insns(sim) - insns;
-				/* Mostly skipped: every core waits for the outside. */
-				if (insns < ran / 64) {
+				if (insns < ran / 64 && sim->s->next_event == PRUSIM_NEVER &&
+				    !pru_sim_inputs_pending(sim))
 					busy = false;
-					sim->slice_cycles = PRU_SIM_IDLE_SLICE;
-				} else {
-					sim->slice_cycles = slice_cycles;
-				}
 				pru_sim_intc_collect(sim);
 				pru_sim_report_stops(sim, reported);
 			}
