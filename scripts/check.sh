@@ -54,6 +54,7 @@ step firmware firmware_check
 step overlays scripts/overlays.sh
 step dkms scripts/dkms-test.sh
 step prusim prusim_check
+step rpmsg-fw tests/rpmsg-fw/run.sh
 step kunit scripts/kunit.sh
 step vmtest scripts/vm.sh test "5.10 6.1 6.12"
 
