@@ -13,8 +13,8 @@
 #   make kunit            KUnit suites on UML with KASAN and lockdep
 #   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
-#   make demo             the emulated BeagleBone runs PRU firmware; see its pins
-#   make bench            simulator benchmarks
+#   make demo             the emulated BeagleBone runs the Cookbook NeoPixel example
+#   make bench            speed: prusim, pru_sim in the VM, rpmsg round trips, cycles per message
 #   make check            everything CI runs; ends with "N passed, N failed"
 
 PRUKIT_VERSION := $(shell sed -n 's/^PACKAGE_VERSION="\(.*\)"/\1/p' $(CURDIR)/dkms.conf)
@@ -94,8 +94,8 @@ checkpatch:
 demo:
 	$(SCRIPTS)/demo.sh
 
-bench: tools
-	tests/prusim/bench.sh
+bench:
+	$(SCRIPTS)/bench.sh
 
 check:
 	$(SCRIPTS)/check.sh

@@ -2,29 +2,40 @@
 # SPDX-License-Identifier: GPL-2.0-only
 #
 # make demo: on a fresh machine, build what is needed, boot the emulated
-# BeagleBone (Debian's 6.1 kernel, pru_sim's PRU-ICSS), run firmware from
-# firmware/examples through remoteproc exactly as the PRU Cookbook does, and
-# show what the PRU's pins did: a terminal rendering and out/demo/*.png.
+# BeagleBone (Debian's 6.1 kernel, pru_sim's PRU-ICSS) and run the PRU
+# Cookbook's NeoPixel example and prukit's rainbow client through
+# /dev/rpmsg_pru30.  The 24 LEDs' colours are decoded from the simulated
+# P9_29 by sigrok's rgb_led_ws281x decoder and shown as coloured blocks in the
+# terminal, a PNG strip per frame, one PNG of all frames and a GIF in out/demo.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-need_pkgs python3-pil
+need_pkgs python3-pil sigrok-cli
 out=$PRUKIT_TOP/out/demo
 rm -rf "$out"
 mkdir -p "$out"
 
 make -s -C "$PRUKIT_TOP" firmware tools >/dev/null
 msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, PRUs simulated by pru_sim)"
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/demo/blinky" "" "$out"
+"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/demo/neopixel" "" "$out"
 
-prusim=$PRUKIT_TOP/out/tools/prusim
-"$prusim" --trace-in "$out/trace.bin" --events "$out/blinky.events" --vcd "$out/blinky.vcd"
-wave=(/usr/bin/python3 "$PRUKIT_TOP/tools/prusim-wave.py" "$out/blinky.events")
+"$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/trace.bin" --events "$out/neopixel.events" \
+	--vcd "$out/neopixel.vcd"
 echo
-echo "PRU0 R30 bits 0..7 (BeagleBone P9 header pins), first 3 us:"
-"${wave[@]}" --cycles 600 --width 96 --png "$out/blinky-3us.png"
+echo "P9_29, the first LED's 24 bits (GRB, MSB first) of the Cookbook's frame:"
+/usr/bin/python3 "$PRUKIT_TOP/tools/prusim-wave.py" "$out/neopixel.events" \
+	--from "$(head -n 1 "$out/neopixel.events" | cut -d' ' -f1)" --cycles 5600 --width 112 \
+	--png "$out/neopixel-led0.png"
 echo
-echo "The whole count, 0..255 (128 us):"
-"${wave[@]}" --cycles 25700 --width 96 --png "$out/blinky-128us.png"
+echo "The 24 LEDs, decoded from P9_29 by sigrok's rgb_led_ws281x (frame 0: the Cookbook's"
+echo "\"0 0xff 0 127\"; then rainbow.py):"
+{
+	echo "#ff007f$(printf ' #000000%.0s' $(seq 23))"
+	cat "$out/rainbow.sent"
+} >"$out/sent.txt"
+/usr/bin/python3 "$PRUKIT_TOP/tools/ws281x-show.py" "$out/neopixel.vcd" --pin P9_29 \
+	--png-dir "$out/frames" --strip "$out/rainbow.png" --gif "$out/rainbow.gif" \
+	--expect "$out/sent.txt"
 echo
-msg "pictures: $out/blinky-3us.png, $out/blinky-128us.png; VCD for PulseView/GTKWave: $out/blinky.vcd"
+msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
+	"$out/neopixel-led0.png; VCD for PulseView/GTKWave: $out/neopixel.vcd"

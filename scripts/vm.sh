@@ -2,9 +2,16 @@
 # SPDX-License-Identifier: GPL-2.0-only
 #
 # The prukit VM harness: boots Debian's own armmp kernels under QEMU (TCG,
-# virt machine, 2 CPUs) with a Debian armhf userland, prukit's modules for
-# that kernel, its firmware, and the device tree of QEMU's virt machine plus
-# prukit's simulator overlays.
+# 2 CPUs) with a Debian armhf userland, prukit's modules for that kernel,
+# its firmware, and the kernel's device tree of the board plus prukit's
+# simulator overlays (tests/vm/overlays).
+#
+# The board is QEMU's vexpress-a15 rather than "virt": its RAM is at
+# 0x80000000, where an AM335x has its DDR, so PRU firmware sees the ARM's
+# buffers at the addresses it would on a BeagleBone.  That matters because
+# virtio (rpmsg) puts CPU physical addresses into its descriptors, while on
+# "virt" RAM at 0x40000000 would overlap what a PRU reaches at those
+# addresses on an AM335x (GPIO banks at 0x44e07000, 0x4804c000, ...).
 #
 #   vm.sh run KVER SCRIPT [IN] [OUT]   (make vmrun)
 #	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
@@ -21,13 +28,15 @@
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-need_pkgs qemu-system-arm device-tree-compiler cpio gzip kmod tar
+need_pkgs qemu-system-arm device-tree-compiler cpio gzip kmod tar sigrok-cli
 
 VM_TIMEOUT=${VM_TIMEOUT:-900}
 VM_MEM=${VM_MEM:-1024}
 VM_CPUS=${VM_CPUS:-2}
 VMDIR=$PRUKIT_TOP/tests/vm
-machine=(-M virt,highmem=off -cpu cortex-a15 -smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+machine=(-M vexpress-a15 -smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+# The board's sound device needs no host audio.
+export QEMU_AUDIO_DRV=none
 
 # Splats that fail a run wherever they appear in the kernel log.
 splat_re='Oops|BUG:|WARNING:|Unable to handle kernel|Kernel panic|INFO: task .* blocked|possible (recursive|circular) locking|UBSAN:|refcount_t:|list_(add|del) corruption|general protection|stack-protector'
@@ -43,26 +52,21 @@ build_prukit() {
 	make -s -C "$PRUKIT_TOP" firmware >/dev/null
 }
 
-# The device tree: QEMU's own virt tree plus prukit's simulator overlays.
+# The device tree: the kernel's own vexpress-a15 tree plus prukit's overlays
+# (QEMU adds its virtio-mmio nodes when it boots).
 make_dtb() {
-	local dir=$1 o
+	local dir=$1 o name base
 	mkdir -p "$dir"
-	qemu-system-arm "${machine[@]}" -machine dumpdtb="$dir/virt.dtb" -nographic \
-		>/dev/null 2>&1
-	local overlays=() name
+	base=$(find "$kimage/usr/lib/linux-image-$kver" -name vexpress-v2p-ca15-tc1.dtb | head -n 1)
+	[ -n "$base" ] || die "no vexpress-v2p-ca15-tc1.dtb in linux-image-$kver"
+	local overlays=()
 	for o in "$VMDIR"/overlays/*.dtso; do
 		[ -e "$o" ] || continue
 		name=$(basename "$o" .dtso)
 		dtc -q -@ -I dts -O dtb -o "$dir/$name.dtbo" "$o"
 		overlays+=("$dir/$name.dtbo")
 	done
-	if [ ${#overlays[@]} -gt 0 ]; then
-		fdtoverlay -i "$dir/virt.dtb" -o "$dir/merged.dtb" "${overlays[@]}"
-	else
-		cp "$dir/virt.dtb" "$dir/merged.dtb"
-	fi
-	# QEMU dumps its tree padded to 1 MiB, and the kernel does not boot
-	# with that (no output at all): write it out compactly.
+	fdtoverlay -i "$base" -o "$dir/merged.dtb" "${overlays[@]}"
 	dtc -q -I dtb -O dtb -o "$dir/prukit.dtb" "$dir/merged.dtb"
 }
 
@@ -101,6 +105,8 @@ make_initrd() {
 		[ -f "$f" ] && install -m 0755 "$f" "$stage/prukit/tests/"
 	done
 	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
+	# Clients a user runs on the board, as shipped
+	install -D -m 0755 "$PRUKIT_TOP/firmware/neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{
 		echo "PRUKIT_MODE=$mode"
 		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
@@ -125,7 +131,9 @@ boot() {
 	fi
 	truncate -s 256M "$disk"
 
-	local start=$(date +%s)
+	# errexit off for the pipeline, then back as the caller had it: a
+	# plain "set -e" here would turn it on in callers that turned it off.
+	local start=$(date +%s) errexit=${-//[^e]/}
 	set +e
 	timeout --foreground "$VM_TIMEOUT" qemu-system-arm "${machine[@]}" \
 		-accel tcg,thread=multi -nographic -no-reboot \
@@ -136,7 +144,7 @@ boot() {
 		-device virtio-blk-device,drive=io,serial=prukit-io \
 		</dev/null 2>&1 | tee "$dir/console.log" | sed -n '/^prukit-vm:/,$p'
 	rc=${PIPESTATUS[0]}
-	set -e
+	[ -z "$errexit" ] || set -e
 	echo "$(( $(date +%s) - start ))" >"$dir/seconds"
 
 	rm -rf "$out"

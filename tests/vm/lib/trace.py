@@ -9,7 +9,11 @@ REC = struct.Struct("<QHB5x")
 def read(path):
     """Return (origin, dropped, [(cycle - origin, pin, level), ...])."""
     with open(path, "rb") as f:
-        data = f.read()
+        return read_bytes(f.read())
+
+
+def read_bytes(data):
+    """read() of a trace already in memory."""
     magic, version, rec_size, origin, count, dropped, _end = HDR.unpack_from(data)
     if magic != b"PRUTRACE" or version != 2 or rec_size != REC.size:
         raise ValueError("not a version 2 prusim trace")
@@ -25,3 +29,9 @@ def read(path):
 def edges(events, pin):
     """Cycles (relative) and levels of the changes of one pin."""
     return [(c, lv) for c, p, lv in events if p == pin]
+
+
+def end_bytes(data):
+    """The cycle (relative, as the events) the trace was taken at."""
+    _, _, _, origin, _, _, end = HDR.unpack_from(data)
+    return end - origin

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# make bench: speed figures, measured, never asserted (these machines are
+# shared and noisy).  PRU time itself is exact and is not a benchmark.
+#   - prusim on one host core, both PRU cores busy (tests/prusim/bench.sh)
+#   - pru_sim inside the VM (Debian 6.1 under QEMU TCG): simulated cycles
+#     per second, and rpmsg round trips and bytes per second through
+#     /dev/rpmsg_pru30
+#   - PRU cycles the firmware spends per received and per sent rpmsg message
+#     (exact: counted by the simulator in tests/rpmsg-fw, not timed)
+set -euo pipefail
+. "$(dirname "$0")/lib.sh"
+
+make -s -C "$PRUKIT_TOP" tools firmware >/dev/null
+"$PRUKIT_TOP/tests/prusim/bench.sh"
+"$PRUKIT_TOP/tests/rpmsg-fw/run.sh" >"$PRUKIT_TOP/out/rpmsg-fw-bench.log" 2>&1 ||
+	die "tests/rpmsg-fw failed; see out/rpmsg-fw-bench.log"
+sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exact)/p' \
+	"$PRUKIT_TOP/out/rpmsg-fw-bench.log" | sed 's/; /\n       /g'
+out=$PRUKIT_TOP/out/bench
+"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out" 2>&1 |
+	grep -E '^(BENCH|INFO):' || true
