@@ -42,10 +42,12 @@
 
 /*
  * A blocked writer waits for the transport to announce a free transmit
- * buffer.  It also retries after this long, so that a lost announcement (or
- * a transport that makes none) can delay a message but never block forever.
+ * buffer, or for a message from the remote side.  virtio's rpmsg bus - the
+ * one PRUs use - announces nothing (it has no poll operation), so a writer
+ * also retries after this long: a message that the remote side answers
+ * nothing to is delayed by at most this much per full transmit ring.
  */
-#define RPMSG_PRU_TX_RETRY	(HZ / 10)
+#define RPMSG_PRU_TX_RETRY	msecs_to_jiffies(5)
 
 static unsigned int rx_queue_len = 64;
 module_param(rx_queue_len, uint, 0444);
@@ -107,6 +109,24 @@ struct rpmsg_pru_port {
 static dev_t rpmsg_pru_devt;
 static DEFINE_IDA(rpmsg_pru_minors);
 
+/* Let blocked writers retry and pollers look again: a buffer may be free. */
+static void rpmsg_pru_tx_may_be_free(struct rpmsg_pru_port *port)
+{
+	atomic_inc(&port->tx_events);
+	wake_up_interruptible_poll(&port->wq, EPOLLOUT | EPOLLWRNORM);
+}
+
+/*
+ * When the transport announces no freed transmit buffers, a message from the
+ * remote side is the best sign that it has taken ours: when it answers, as
+ * most PRU firmware does, writers go on at once, not after RPMSG_PRU_TX_RETRY.
+ */
+static void rpmsg_pru_rx_frees_tx(struct rpmsg_pru_port *port)
+{
+	if (!READ_ONCE(port->tx_whead))
+		rpmsg_pru_tx_may_be_free(port);
+}
+
 static int rpmsg_pru_cb(struct rpmsg_device *rpdev, void *data, int len,
 			void *priv, u32 src)
 {
@@ -126,6 +146,7 @@ static int rpmsg_pru_cb(struct rpmsg_device *rpdev, void *data, int len,
 		spin_unlock_irqrestore(&port->lock, flags);
 		kfree(msg);
 		dev_dbg_ratelimited(&port->dev, "dropped a %d-byte message\n", len);
+		rpmsg_pru_rx_frees_tx(port);
 		return 0;
 	}
 	list_add_tail(&msg->node, &port->queue);
@@ -133,6 +154,7 @@ static int rpmsg_pru_cb(struct rpmsg_device *rpdev, void *data, int len,
 	spin_unlock_irqrestore(&port->lock, flags);
 
 	wake_up_interruptible_poll(&port->wq, EPOLLIN | EPOLLRDNORM);
+	rpmsg_pru_rx_frees_tx(port);
 	return 0;
 }
 
@@ -145,8 +167,7 @@ static int rpmsg_pru_tx_wake(wait_queue_entry_t *wait, unsigned int mode,
 {
 	struct rpmsg_pru_port *port = container_of(wait, struct rpmsg_pru_port, tx_wait);
 
-	atomic_inc(&port->tx_events);
-	wake_up_interruptible_poll(&port->wq, EPOLLOUT | EPOLLWRNORM);
+	rpmsg_pru_tx_may_be_free(port);
 	return 0;
 }
 
@@ -163,9 +184,9 @@ static void rpmsg_pru_tx_queue_proc(struct file *filp, wait_queue_head_t *whead,
 
 	if (port->tx_whead)
 		return;
-	port->tx_whead = whead;
 	init_waitqueue_func_entry(&port->tx_wait, rpmsg_pru_tx_wake);
 	add_wait_queue(whead, &port->tx_wait);
+	WRITE_ONCE(port->tx_whead, whead);
 }
 
 static void rpmsg_pru_attach_tx(struct rpmsg_pru_port *port)
@@ -178,7 +199,7 @@ static void rpmsg_pru_detach_tx(struct rpmsg_pru_port *port)
 {
 	if (port->tx_whead)
 		remove_wait_queue(port->tx_whead, &port->tx_wait);
-	port->tx_whead = NULL;
+	WRITE_ONCE(port->tx_whead, NULL);
 }
 
 /* Whether a transmit buffer is free; arms the transport's announcement if not. */

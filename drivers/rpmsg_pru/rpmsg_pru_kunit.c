@@ -467,6 +467,33 @@ static void rpmsg_pru_test_blocking_write(struct kunit *test)
 	fput(filp);
 }
 
+/*
+ * virtio's rpmsg bus has no poll operation and never announces a freed
+ * transmit buffer: a message from the remote side lets blocked writers retry.
+ */
+static void rpmsg_pru_test_blocking_write_unannounced(struct kunit *test)
+{
+	struct rpmsg_pru_test *t = test->priv;
+	struct file *filp = test_open(test, 0);
+	struct test_io *io;
+	int events;
+
+	/* As if the transport had no poll operation */
+	rpmsg_pru_detach_tx(t->port);
+	fake_set_tx_free(t->fake, 0);
+	io = test_io_start(test, filp, true, 7);
+	KUNIT_EXPECT_FALSE(test, completion_done(&io->done));
+
+	events = atomic_read(&t->port->tx_events);
+	/* The "PRU" takes the message, silently, and answers */
+	fake_set_tx_free(t->fake, 1);
+	fake_deliver(t->fake, "ack", 3);
+	KUNIT_EXPECT_NE(test, atomic_read(&t->port->tx_events), events);
+	KUNIT_EXPECT_EQ(test, test_io_wait(test, io), 7);
+	KUNIT_EXPECT_EQ(test, fake_tx_count(t->fake), 1);
+	fput(filp);
+}
+
 static void rpmsg_pru_test_poll(struct kunit *test)
 {
 	struct rpmsg_pru_test *t = test->priv;
@@ -658,6 +685,7 @@ static struct kunit_case rpmsg_pru_test_cases[] = {
 	KUNIT_CASE(rpmsg_pru_test_overflow),
 	KUNIT_CASE(rpmsg_pru_test_nonblock),
 	KUNIT_CASE(rpmsg_pru_test_blocking_write),
+	KUNIT_CASE(rpmsg_pru_test_blocking_write_unannounced),
 	KUNIT_CASE(rpmsg_pru_test_poll),
 	KUNIT_CASE(rpmsg_pru_test_remove_blocked_reader),
 	KUNIT_CASE(rpmsg_pru_test_remove_blocked_writer),
