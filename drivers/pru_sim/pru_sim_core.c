@@ -158,13 +158,23 @@ static const struct rproc_ops pru_sim_rproc_ops_kick = {
 	.kick = pru_sim_kick,
 };
 
-/* PRU -> ARM: the firmware filled used buffers of one of the virtqueues. */
+/*
+ * PRU -> ARM: the firmware filled used buffers of one of the virtqueues.
+ *
+ * Under the remote processor's lock, which remoteproc holds while it creates
+ * the virtqueues (boot) and deletes them (shutdown): rproc_vq_interrupt()
+ * does not synchronise with either, and an interrupt racing with a stop ran
+ * rpmsg_recv_done() on a freed virtio_rpmsg device (an oops seen in the VM).
+ * Nothing that holds the lock waits for this thread.
+ */
 static irqreturn_t pru_sim_vring_thread(int irq, void *data)
 {
 	struct pru_sim_core *pc = data;
 
+	mutex_lock(&pc->rproc->lock);
 	rproc_vq_interrupt(pc->rproc, 0);
 	rproc_vq_interrupt(pc->rproc, 1);
+	mutex_unlock(&pc->rproc->lock);
 	return IRQ_HANDLED;
 }
 
