@@ -101,6 +101,9 @@ enum prusim_lat {
  * @event_latency: cycles from an R31 event strobe until the event is seen in
  *	the INTC (and in R31 bits 30/31 of a reader); 1..16
  * @no_skip: never skip idle cycles (for instruction tracing)
+ * @irq_map_by_embedder: prusim_load_elf() only reports the .pru_irq_map
+ *	entries in &prusim_elf_info; the embedder routes them (a remoteproc
+ *	driver does so when the core starts, and undoes it when it stops)
  */
 struct prusim_config {
 	u16 read_latency[PRUSIM_NUM_LAT];
@@ -112,6 +115,7 @@ struct prusim_config {
 	u16 r31_sync_delay;
 	u16 event_latency;
 	bool no_skip;
+	bool irq_map_by_embedder;
 };
 
 /**
@@ -248,6 +252,9 @@ struct prusim_idle {
  * @wakeup_en: WAKEUP_EN register
  * @cycle_cnt: CYCLE register
  * @stall_cnt: STALL register
+ * @ctr_from: first cycle counted into @cycle_cnt and @stall_cnt after a
+ *	store to CYCLE (the store's value lands at the end of the cycle after
+ *	the store, so neither cycle is counted); 0 when nothing is held back
  * @ctbir: CTBIR0/1 registers
  * @ctppr: CTPPR0/1 registers
  * @ctable: constant table C0..C31 as currently programmed
@@ -287,6 +294,7 @@ struct prusim_core {
 	u32 wakeup_en;
 	u32 cycle_cnt;
 	u32 stall_cnt;
+	u64 ctr_from;
 	u32 ctbir[2];
 	u32 ctppr[2];
 	u32 ctable[32];
@@ -472,7 +480,9 @@ struct prusim_status {
  * @rsc_offset: file offset of the .resource_table section (0: none)
  * @rsc_size: its size in bytes
  * @rsc_addr: its address in the core's data memory map
- * @irq_map_events: number of .pru_irq_map entries applied to the INTC
+ * @irq_map_events: number of .pru_irq_map entries
+ * @irq_map: the entries: system event, channel, host interrupt (applied to
+ *	the INTC unless &prusim_config.irq_map_by_embedder)
  * @err: human readable reason when loading failed
  */
 struct prusim_elf_info {
@@ -481,6 +491,7 @@ struct prusim_elf_info {
 	u32 rsc_size;
 	u32 rsc_addr;
 	unsigned int irq_map_events;
+	u8 irq_map[PRUSIM_NUM_EVENTS][3];
 	char err[PRUSIM_REASON_LEN];
 };
 
@@ -499,6 +510,8 @@ bool prusim_active(const struct prusim *s);
 void prusim_get_status(const struct prusim *s, unsigned int core,
 		       struct prusim_status *st);
 void prusim_input_changed(struct prusim *s, unsigned int port);
+void prusim_memory_written(struct prusim *s);
+void prusim_yield(struct prusim *s);
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */
 void prusim_raise_event(struct prusim *s, unsigned int event);

@@ -462,6 +462,28 @@ static void count_cycles(struct prusim_core *c, u32 cycles, u32 stalls)
 								: c->stall_cnt + stalls;
 }
 
+/**
+ * prusim_count() - count cycles of core @c into CYCLE and STALL
+ * @c: core, with CONTROL.CTR_EN set
+ * @from: first cycle
+ * @stall_from: first of them that is a stall cycle
+ * @end: cycle after the last
+ *
+ * Counts the cycles [@from, @end), of which [@stall_from, @end) are stalls,
+ * leaving out those before &prusim_core.ctr_from (the cycles a store to
+ * CYCLE overwrites).
+ */
+void prusim_count(struct prusim_core *c, u64 from, u64 stall_from, u64 end)
+{
+	if (unlikely(c->ctr_from > from)) {
+		from = c->ctr_from;
+		if (stall_from < from)
+			stall_from = from;
+	}
+	if (end > from)
+		count_cycles(c, end - from, end > stall_from ? end - stall_from : 0);
+}
+
 static void single_step_done(struct prusim *s, struct prusim_core *c)
 {
 	c->state = PRUSIM_DISABLED;
@@ -490,7 +512,7 @@ static inline void retire(struct prusim *s, struct prusim_core *c, u64 issue, u3
 	c->next = issue + cost;
 	if (unlikely(c->control & (PRUSIM_CTRL_CTR_EN | PRUSIM_CTRL_SINGLE_STEP))) {
 		if (c->control & PRUSIM_CTRL_CTR_EN)
-			count_cycles(c, cost, cost - 1);
+			prusim_count(c, issue, issue + 1, issue + cost);
 		if (c->control & PRUSIM_CTRL_SINGLE_STEP)
 			single_step_done(s, c);
 	}
@@ -502,7 +524,7 @@ static void stall_retry(struct prusim *s, struct prusim_core *c)
 	c->stalls++;
 	c->next = s->now + 1;
 	if (c->control & PRUSIM_CTRL_CTR_EN)
-		count_cycles(c, 1, 1);
+		prusim_count(c, s->now, s->now, s->now + 1);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -613,7 +635,10 @@ static void skip_core(struct prusim_core *c, u64 cycles)
 	c->stalls += stalls;
 	c->skipped_insns += insns;
 	if (c->control & PRUSIM_CTRL_CTR_EN) {
-		/* skip_limit() keeps CYCLE below saturation */
+		/*
+		 * skip_limit() keeps CYCLE below saturation; a store to CYCLE
+		 * ends the idle observation, so &prusim_core.ctr_from is past
+		 */
 		c->cycle_cnt += cycles;
 		c->stall_cnt = (u64)c->stall_cnt + stalls >= COUNTER_MAX ?
 			       COUNTER_MAX : c->stall_cnt + stalls;
@@ -1047,7 +1072,7 @@ static void exec_halt(struct prusim *s, struct prusim_core *c)
 {
 	c->insns++;
 	if (c->control & PRUSIM_CTRL_CTR_EN)
-		count_cycles(c, 1, 0);
+		prusim_count(c, s->now, s->now + 1, s->now + 1);
 	c->state = PRUSIM_HALTED;
 	c->next = PRUSIM_NEVER;
 	snprintf(c->reason, sizeof(c->reason), "HALT at 0x%04x", c->pc * 4);
@@ -1302,7 +1327,8 @@ static __always_inline void step(struct prusim *s, struct prusim_core *c)
  * Both cores advance in lockstep.  Returns early when a core is stopped by
  * the simulator (see prusim_get_status()) or when nothing can happen any
  * more: no core runs, no sleeping core can be woken by an input, and no
- * posted write or event is in flight.  Idle cycles (only waiting loops,
+ * posted write or event is in flight, or when a callback called
+ * prusim_yield().  Idle cycles (only waiting loops,
  * sleeping or halted cores) are skipped without changing the result.  It
  * neither sleeps nor yields: a kernel embedder calls it in slices.
  *
@@ -1340,7 +1366,8 @@ u64 prusim_run(struct prusim *s, u64 max_cycles)
 				prusim_queue_run(s);
 				s->in_step = true;
 			}
-			s->attention = prusim_min_u64(end, s->next_event);
+			/* a callback of the queued action may have asked to return */
+			s->attention = s->stop_run ? 0 : prusim_min_u64(end, s->next_event);
 		}
 		s->now = t;
 		if (c0->next == t)
@@ -1583,4 +1610,34 @@ void prusim_input_changed(struct prusim *s, unsigned int port)
 			c->next = s->now;
 	}
 	s->epoch++;
+}
+
+/**
+ * prusim_memory_written() - the embedder wrote memory that a core may poll
+ * @s: simulator
+ *
+ * Writes through prusim_da_to_va() pointers (or to the RAM behind the OCP
+ * port) are invisible to the idle detector: a core found spinning on a
+ * control word would be skipped over forever.  Call this between
+ * prusim_run() calls whenever such a write may have happened; idle loops
+ * are examined afresh (costing one iteration each), nothing else changes.
+ */
+void prusim_memory_written(struct prusim *s)
+{
+	s->epoch++;
+}
+
+/**
+ * prusim_yield() - make prusim_run() return at the end of the current cycle
+ * @s: simulator
+ *
+ * For callbacks: an embedder that must act on what just happened (a host
+ * interrupt for the ARM, say) ends the slice here instead of at its budget.
+ * The cycles not run are simply run by the next prusim_run() call; the
+ * simulated result does not change.
+ */
+void prusim_yield(struct prusim *s)
+{
+	s->stop_run = true;
+	s->attention = 0;
 }

@@ -239,12 +239,16 @@ static int elf_irq_map(struct prusim_elf *e, struct prusim *s)
 		return elf_err(e, ".pru_irq_map type %u is not supported", p[0]);
 	if (size < 2 + n * IRQ_MAP_ENTRY)
 		return elf_err(e, ".pru_irq_map holds %u bytes, too few for %u events", size, n);
+	if (n > PRUSIM_NUM_EVENTS)
+		return elf_err(e, ".pru_irq_map maps %u events, more than the %u there are",
+			       n, PRUSIM_NUM_EVENTS);
 	for (i = 0, p += 2; i < n; i++, p += IRQ_MAP_ENTRY) {
 		if (p[0] >= PRUSIM_NUM_EVENTS || p[1] >= PRUSIM_NUM_CHANNELS ||
 		    p[2] >= PRUSIM_NUM_HOSTS)
 			return elf_err(e, ".pru_irq_map entry %u (%u, %u, %u) out of range",
 				       i, p[0], p[1], p[2]);
-		if (s)
+		memcpy(e->info->irq_map[i], p, IRQ_MAP_ENTRY);
+		if (s && !s->cfg.irq_map_by_embedder)
 			prusim_intc_map(s, p[0], p[1], p[2]);
 	}
 	e->info->irq_map_events = n;
@@ -261,7 +265,8 @@ static int elf_irq_map(struct prusim_elf *e, struct prusim *s)
  *
  * Loads the PT_LOAD segments (IRAM, own/other DRAM, shared RAM), sets the pc
  * and PCOUNTER_RST_VAL to the entry point and applies the .pru_irq_map
- * section to the INTC.  Nothing is changed if the image is rejected.  The
+ * section to the INTC (or only reports it, see
+ * &prusim_config.irq_map_by_embedder).  Nothing is changed if the image is rejected.  The
  * core stays disabled; start it with prusim_core_enable().
  *
  * Return: 0, -EBUSY if the core runs, or -ENOEXEC with @info->err set.

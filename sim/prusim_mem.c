@@ -462,11 +462,16 @@ static void ctrl_write32(struct prusim *s, unsigned int unit, u32 off, u32 val, 
 		prusim_wake(s);
 		return;
 	case 0x0c:
-		/* CYCLE can be written (cleared) only while it is not counting */
-		if (!(c->control & PRUSIM_CTRL_CTR_EN) || c->state != PRUSIM_RUNNING) {
-			c->cycle_cnt = v;
-			c->stall_cnt = 0;
-		}
+		/*
+		 * Writing CYCLE sets it and clears STALL, also while they count
+		 * (the PRU Cookbook's measurement).  A PRU store issued in cycle
+		 * t lands at the end of cycle t + 1: the counters hold the value
+		 * then and count again from t + 2.  The ARM writes between
+		 * cycles.
+		 */
+		c->cycle_cnt = v;
+		c->stall_cnt = 0;
+		c->ctr_from = s->in_step ? s->now + 2 : 0;
 		return;
 	case 0x20:
 	case 0x24:
@@ -904,6 +909,26 @@ static int ocp_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8
 	return ret ? ocp_failed(s, c, "write", addr, len, ret) : 0;
 }
 
+/*
+ * A load by core @c of its own CTRL block while its counters run: the load
+ * issued in this cycle and takes @cycles cycles; it samples CYCLE and STALL
+ * at the start of its last cycle, so they include its other cycles (the
+ * first one and all stall cycles but the last).  The counters themselves
+ * advance when the load retires.
+ */
+static void ctrl_read_own(struct prusim *s, struct prusim_core *c,
+			  const struct prusim_region *r, u8 *buf, u32 len, u32 cycles)
+{
+	u32 cycle_cnt = c->cycle_cnt, stall_cnt = c->stall_cnt, control = c->control;
+
+	if (cycles > 1)
+		prusim_count(c, s->now, s->now + 1, s->now + cycles - 1);
+	region_read(s, r, buf, len);
+	c->cycle_cnt = cycle_cnt;
+	c->stall_cnt = stall_cnt;
+	c->control = control;
+}
+
 /**
  * prusim_mem_read() - a load by core @c from its local address map
  * @s: simulator
@@ -928,8 +953,11 @@ int prusim_mem_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, 
 			    len, addr);
 		return -EFAULT;
 	}
-	region_read(s, &r, buf, len);
 	acc->cycles = prusim_read_cycles(s, r.lat, len);
+	if (r.rd == ctrl_read32 && r.unit == c->index && (c->control & PRUSIM_CTRL_CTR_EN))
+		ctrl_read_own(s, c, &r, buf, len, acc->cycles);
+	else
+		region_read(s, &r, buf, len);
 	acc->volatile_data = r.volatile_data;
 	return 0;
 }

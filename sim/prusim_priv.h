@@ -110,6 +110,7 @@ __printf(3, 4) void prusim_stop(struct prusim *s, struct prusim_core *c,
 				const char *fmt, ...);
 u32 prusim_r31(struct prusim *s, struct prusim_core *c);
 void prusim_wake(struct prusim *s);
+void prusim_count(struct prusim_core *c, u64 from, u64 stall_from, u64 end);
 
 int prusim_mem_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf,
 		    u32 len, struct prusim_access *acc);

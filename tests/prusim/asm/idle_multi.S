@@ -14,9 +14,10 @@
 #   PRU0: ldi32 0-1, ldi 2, sbbo CTR_EN 3 (counted), ldi32 4-5, loads at
 #         6 + 4k; the one in 7786 sees the flag (PRU1's store in 7785; PRU0
 #         issues first within a cycle), qbeq 7789, lbbo CYCLE 7790 reads
-#         7787 (cycles 3..7789), lbbo STALL 7794 reads 1946 * 2 + 3 = 3895,
-#         halt 7798.  6 + 1946 * 2 + 3 = 3901 instructions, 3898 stalls;
-#         CYCLE ends at 7787 + 4 + 4 + 1 = 7796, STALL at 3898.
+#         7790 (cycles 3..7792: a load samples at the start of its last
+#         cycle), lbbo STALL 7794 reads 1946 * 2 + 3 + 2 = 3897, halt
+#         7798.  6 + 1946 * 2 + 3 = 3901 instructions, 3898 stalls; CYCLE
+#         ends at 7787 + 4 + 4 + 1 = 7796, STALL at 3898.
 #
 # cores: 0 1
 # args: --r31-1 {dir}/../stim/multi.txt --event 4000:40 --event 6000:41
@@ -24,8 +25,8 @@
 # expect: pru0.state=halted
 # expect: pru0.instructions=3901
 # expect: pru0.stalls=3898
-# expect: pru0.r6=7787
-# expect: pru0.r7=3895
+# expect: pru0.r6=7790
+# expect: pru0.r7=3897
 # expect: pru0.cycle_counter=7796
 # expect: pru0.stall_counter=3898
 # expect: pru1.state=halted

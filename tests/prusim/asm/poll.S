@@ -7,7 +7,8 @@
 #
 #   PRU0: 0-3 setup (CTR_EN from the store in cycle 3), polls at 4 + 3k;
 #         the read in cycle 2000002 sees the bit; and, qbeq, lbbo CYCLE in
-#         2000005 reads 2000002 (cycles 3..2000004); ldi32, ldi, sbbo flag
+#         2000005 reads 2000005 (cycles 3..2000007: it samples at the start
+#         of its last cycle, 2000008); ldi32, ldi, sbbo flag
 #         in 2000012, halt 2000013.  2000011 instructions, 3 stalls.
 #   PRU1: 0-1 ldi32, loads at 2 + 4k; the one in 2000014 sees the flag;
 #         qbeq 2000017, halt 2000018.  1000011 instructions.
@@ -15,7 +16,7 @@
 # cores: 0 1
 # args: --r31-0 {dir}/../stim/poll.txt
 # expect: cycles=2000019
-# expect: pru0.r3=2000002
+# expect: pru0.r3=2000005
 # expect: pru0.instructions=2000011
 # expect: pru0.stalls=3
 # expect: pru1.instructions=1000011
