@@ -108,7 +108,9 @@ check_elf() {
 	# .text starts at IRAM 0 and its first instruction is _start
 	local taddr first
 	taddr=$(sec_field "$elf" .text 2)
-	first=$("$OBJDUMP" -d "$elf" | awk '/^[0-9a-f]+ <.*>:$/ { print; exit }')
+	# (awk reads to the end: leaving early would kill objdump with SIGPIPE,
+	# which pipefail turns into a failure of the whole script.)
+	first=$("$OBJDUMP" -d "$elf" | awk '/^[0-9a-f]+ <.*>:$/ && !n++ { print }')
 	if [ "$taddr" = 20000000 ] && [ "$first" = "20000000 <_start>:" ]; then
 		pass "$name: .text at 0x20000000 (IRAM 0) begins with _start"
 	else

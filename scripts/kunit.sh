@@ -20,6 +20,15 @@ grep -q '^obj-y.*+= prukit/' "$src/drivers/Makefile" ||
 	echo 'obj-y				+= prukit/' >>"$src/drivers/Makefile"
 
 mkdir -p "$build"
+# The build directory is shared by every checkout (through the symlink
+# above), and make goes by modification times: objects built from another
+# checkout can look newer than this one's sources and be linked stale (seen
+# as a KASAN stack-out-of-bounds in prusim_load_elf() after prusim.h grew).
+# Whenever the checkout changes, prukit's objects are rebuilt.
+if [ "$(cat "$build/.prukit-top" 2>/dev/null)" != "$PRUKIT_TOP" ]; then
+	rm -rf "$build/drivers/prukit"
+	echo "$PRUKIT_TOP" >"$build/.prukit-top"
+fi
 # The prusim validation programs, assembled and embedded for the KUnit suite.
 "$PRUKIT_TOP/tests/kunit/prusim/gen.sh"
 log=$PRUKIT_TOP/out/kunit.log

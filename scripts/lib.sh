@@ -10,7 +10,8 @@ die() { printf '[prukit] error: %s\n' "$*" >&2; exit 1; }
 
 # Run a long step quietly, keeping its log; show the tail of the log on failure.
 run_logged() {
-	local log=$1
+	local log
+	log=$(realpath -m "$1")
 	shift
 	if ! "$@" >"$log" 2>&1; then
 		tail -n 40 "$log" >&2

@@ -25,6 +25,11 @@ gcc_ver=$(basename "$gcc_tar" -dfsg.tar.xz)
 nl_ver=$(basename "$nl_tar" .tar.xz)
 
 prefix=$PRUKIT_CACHE/pru-toolchain-$gcc_ver-$bu_ver-$nl_ver
+# One bootstrap at a time: it rebuilds in one shared directory, so a second
+# caller waits here for the first one and then finds the toolchain built.
+mkdir -p "$PRUKIT_CACHE"
+exec 9>"$PRUKIT_CACHE/pru-toolchain.lock"
+flock 9
 if [ -x "$prefix/bin/pru-gcc" ] && [ -e "$prefix/.complete" ]; then
 	echo "$prefix/bin"
 	exit 0
