@@ -53,9 +53,11 @@ firmware:
 	$(MAKE) -C firmware O=$(BUILD)/firmware \
 		CROSS_COMPILE=$$($(SCRIPTS)/pru-toolchain.sh)/pru-
 
-firmware_install:
+# The firmware users run; test firmware (fw-test := y) stays out.
+firmware_install: firmware
 	install -d $(DESTDIR)$(FIRMWARE_DIR)/prukit
-	install -m 0644 $(BUILD)/firmware/*.elf $(DESTDIR)$(FIRMWARE_DIR)/prukit/
+	install -m 0644 $$($(MAKE) -s -C firmware O=$(BUILD)/firmware list-install) \
+		$(DESTDIR)$(FIRMWARE_DIR)/prukit/
 
 overlays:
 	$(SCRIPTS)/overlays.sh

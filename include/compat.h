@@ -50,4 +50,93 @@
 	struct rproc *rproc, u64 da, size_t len
 #endif
 
+/*
+ * v5.11: rproc_set_firmware() ("remoteproc: Add a rproc_set_firmware()
+ * API").  Before it, do what remoteproc's sysfs "firmware" store does.
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#define prukit_rproc_set_firmware(rproc, name)	rproc_set_firmware(rproc, name)
+#else
+#include <linux/remoteproc.h>
+#include <linux/slab.h>
+static inline int prukit_rproc_set_firmware(struct rproc *rproc, const char *name)
+{
+	char *p;
+	int ret;
+
+	if (!name || !*name)
+		return -EINVAL;
+	ret = mutex_lock_interruptible(&rproc->lock);
+	if (ret)
+		return ret;
+	if (rproc->state != RPROC_OFFLINE) {
+		ret = -EBUSY;
+		goto out;
+	}
+	p = kstrdup(name, GFP_KERNEL);
+	if (!p) {
+		ret = -ENOMEM;
+		goto out;
+	}
+	kfree(rproc->firmware);
+	rproc->firmware = p;
+out:
+	mutex_unlock(&rproc->lock);
+	return ret;
+}
+#endif
+
+/*
+ * rproc_da_to_va(): exported since v3.4 but declared only in
+ * drivers/remoteproc/remoteproc_internal.h until v5.18 ("remoteproc: move
+ * rproc_da_to_va declaration to remoteproc.h"); v5.13 added "bool
+ * *is_iomem" (see PRUKIT_RPROC_DA_TO_VA_ARGS).
+ */
+struct rproc;
+#if LINUX_VERSION_CODE < KERNEL_VERSION(5, 18, 0)
+void *rproc_da_to_va(PRUKIT_RPROC_DA_TO_VA_ARGS);
+#endif
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 13, 0)
+#define prukit_rproc_da_to_va(rproc, da, len, is_iomem) \
+	rproc_da_to_va(rproc, da, len, is_iomem)
+#else
+#define prukit_rproc_da_to_va(rproc, da, len, is_iomem) \
+	({ *(is_iomem) = false; rproc_da_to_va(rproc, da, len); })
+#endif
+
+/*
+ * pru_rproc_get()/pru_rproc_put(): the kernel's PRU remoteproc driver hands
+ * out its cores.  Decided by what the kernel has, not by its version (TI's
+ * 6.1 and Debian's 6.1 are both "6.1"): the driver must be configured, and
+ * its header is <linux/remoteproc/pruss.h> (mainline since v6.4, TI's 6.1)
+ * or <linux/pruss.h> (TI's 5.10).  Without them, every core is reached
+ * with rproc_get_by_phandle().
+ */
+#if IS_ENABLED(CONFIG_PRU_REMOTEPROC) && __has_include("linux/remoteproc/pruss.h")
+#include <linux/remoteproc/pruss.h>
+#define PRUKIT_HAVE_PRU_RPROC_GET	1
+#elif IS_ENABLED(CONFIG_PRU_REMOTEPROC) && __has_include("linux/pruss.h")
+#include <linux/pruss.h>
+#define PRUKIT_HAVE_PRU_RPROC_GET	1
+#endif
+#ifdef PRUKIT_HAVE_PRU_RPROC_GET
+#define prukit_pru_rproc_get(np, index)	pru_rproc_get(np, index, NULL)
+#define prukit_pru_rproc_put(rproc)	pru_rproc_put(rproc)
+#else
+#define prukit_pru_rproc_get(np, index)	ERR_PTR(-ENODEV)
+#define prukit_pru_rproc_put(rproc)	do { } while (0)
+#endif
+
+/*
+ * v6.13: symbol namespaces are string literals ("module: Convert symbol
+ * namespace to string literal").
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 13, 0)
+#define EXPORT_SYMBOL_PRUKIT(sym)	EXPORT_SYMBOL_NS_GPL(sym, "PRUKIT")
+#define PRUKIT_IMPORT_NS()		MODULE_IMPORT_NS("PRUKIT")
+#else
+#define EXPORT_SYMBOL_PRUKIT(sym)	EXPORT_SYMBOL_NS_GPL(sym, PRUKIT)
+#define PRUKIT_IMPORT_NS()		MODULE_IMPORT_NS(PRUKIT)
+#endif
+
 #endif /* PRUKIT_COMPAT_H */

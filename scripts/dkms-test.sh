@@ -74,6 +74,15 @@ if make -s -C "$PRUKIT_TOP" modules KDIR="$kdir" >"$work/install.log" 2>&1 &&
 			failed=1
 		fi
 	done
+	# Test firmware (fw-test := y) is built but not installed.
+	for f in consumer-test-pru0.elf irq-test-pru0.elf; do
+		if [ -e "$PRUKIT_TOP/out/firmware/$f" ] && [ ! -e "$stage/lib/firmware/prukit/$f" ]; then
+			echo "PASS: make install leaves out the test firmware $f"
+		else
+			echo "FAIL: make install leaves out the test firmware $f"
+			failed=1
+		fi
+	done
 else
 	tail -n 20 "$work/install.log"
 	echo "FAIL: make install DESTDIR=... (see $work/install.log)"

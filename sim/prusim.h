@@ -101,6 +101,12 @@ enum prusim_lat {
  * @event_latency: cycles from an R31 event strobe until the event is seen in
  *	the INTC (and in R31 bits 30/31 of a reader); 1..16
  * @no_skip: never skip idle cycles (for instruction tracing)
+ * @stop_when_idle: when every core waits for something only the outside
+ *	can bring (a waiting loop, SLP, HALT, no queued action, no announced
+ *	input change), prusim_run() returns there and sets &prusim.waiting
+ *	instead of skipping to the end of its budget: simulated time then
+ *	passes only while something happens (an embedder that sleeps until the
+ *	outside acts)
  * @irq_map_by_embedder: prusim_load_elf() only reports the .pru_irq_map
  *	entries in &prusim_elf_info; the embedder routes them (a remoteproc
  *	driver does so when the core starts, and undoes it when it stops)
@@ -115,6 +121,7 @@ struct prusim_config {
 	u16 r31_sync_delay;
 	u16 event_latency;
 	bool no_skip;
+	bool stop_when_idle;
 	bool irq_map_by_embedder;
 };
 
@@ -409,6 +416,8 @@ struct prusim_timed {
  * @skip_pending: a core found an idle loop; try to skip ahead
  * @in_step: a core instruction is executing (its effects show next cycle)
  * @stop_run: a core was stopped; prusim_run() returns
+ * @waiting: the last prusim_run() returned because every core waits for the
+ *	outside (&prusim_config.stop_when_idle)
  * @core: the two PRU cores
  * @shared: shared RAM
  * @spad: scratchpad banks 0..2 (XFR devices 10..12)
@@ -434,6 +443,7 @@ struct prusim {
 	bool skip_pending;
 	bool in_step;
 	bool stop_run;
+	bool waiting;
 	struct prusim_core core[PRUSIM_NUM_CORES];
 	u8 shared[PRUSIM_SHARED_SIZE];
 	u8 spad[PRUSIM_SPAD_BANKS][PRUSIM_SPAD_BYTES];

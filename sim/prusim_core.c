@@ -660,6 +660,8 @@ static void try_skip(struct prusim *s, u64 from, u64 end)
 	u64 cycles;
 	unsigned int i;
 
+	u64 inside = s->next_event;
+
 	if (s->cfg.no_skip || from >= limit)
 		return;
 	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
@@ -668,6 +670,13 @@ static void try_skip(struct prusim *s, u64 from, u64 end)
 		if (!l)
 			return;
 		limit = prusim_min_u64(limit, l);
+		inside = prusim_min_u64(inside, l);
+	}
+	if (inside == PRUSIM_NEVER && s->cfg.stop_when_idle) {
+		/* nothing inside will ever end the wait: leave the rest of the budget */
+		s->waiting = true;
+		prusim_yield(s);
+		return;
 	}
 	if (limit <= from)
 		return;
@@ -1341,6 +1350,7 @@ u64 prusim_run(struct prusim *s, u64 max_cycles)
 	struct prusim_core *c0 = &s->core[0], *c1 = &s->core[1];
 
 	s->stop_run = false;
+	s->waiting = false;
 	s->attention = 0;
 	s->in_step = true;
 	for (;;) {

@@ -12,11 +12,15 @@
 #include <linux/kthread.h>
 #include <linux/mutex.h>
 #include <linux/remoteproc.h>
+#include <linux/spinlock.h>
 #include <linux/wait.h>
 
 #include "prusim.h"
 #include "prusim_stim.h"
 #include "prusim_trace.h"
+
+/* Host interrupts 2..9 of the INTC are wired to the ARM. */
+#define PRU_SIM_FIRST_ARM_HOST	2
 
 struct irq_domain;
 struct pru_sim;
@@ -38,6 +42,9 @@ irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
  * @kick_irq: Linux interrupt whose pending state is the ARM -> PRU "kick"
  *	event, or 0 (then the core has no kick, as with mainline pru_rproc)
  * @elf: what the loader found in the current firmware
+ * @map_virq: Linux interrupts created for the firmware's .pru_irq_map while
+ *	the core runs (disposed of when it stops)
+ * @nr_map_virq: entries in @map_virq
  */
 struct pru_sim_core {
 	struct pru_sim *sim;
@@ -47,6 +54,8 @@ struct pru_sim_core {
 	int vring_irq;
 	int kick_irq;
 	struct prusim_elf_info elf;
+	unsigned int map_virq[PRUSIM_NUM_EVENTS];
+	unsigned int nr_map_virq;
 };
 
 /**
@@ -99,6 +108,20 @@ struct pru_sim_trace {
  * @to_arm: system events for the ARM, taken from the INTC, not yet delivered
  * @masked: system events whose Linux interrupt is masked
  * @mapped: system events that have a Linux interrupt
+ * @routed: system events given a route by an interrupt specifier
+ * @route_ch: channel of each routed event
+ * @route_host: host interrupt of each routed event
+ * @cycle: simulator cycle at the end of the last slice, for readers that
+ *	cannot take @lock
+ * @irq_since: cycle of the R31 strobe of the oldest event not yet taken
+ *	for the ARM, or 0 (under @lock)
+ * @stat_lock: protects the latency statistics below
+ * @taken_since: @irq_since of the events handed to @irq_work
+ * @lat_last: PRU cycles from the strobe of the last event delivered to the
+ *	ARM until its Linux handler ran
+ * @lat_max: largest @lat_last
+ * @lat_sum: sum of all @lat_last
+ * @lat_count: number of deliveries measured
  * @ram_bus: PRU bus address at which the ARM's RAM appears (dma-ranges)
  * @ram_phys: CPU physical address of that RAM
  * @ram_size: its size
@@ -123,6 +146,17 @@ struct pru_sim {
 	atomic64_t to_arm;
 	atomic64_t masked;
 	u64 mapped;
+	u64 routed;
+	u8 route_ch[PRUSIM_NUM_EVENTS];
+	u8 route_host[PRUSIM_NUM_EVENTS];
+	atomic64_t cycle;
+	u64 irq_since;
+	spinlock_t stat_lock;		/* protects the lat_* statistics */
+	u64 taken_since;
+	u64 lat_last;
+	u64 lat_max;
+	u64 lat_sum;
+	u64 lat_count;
 	u64 ram_bus;
 	phys_addr_t ram_phys;
 	u64 ram_size;
@@ -139,6 +173,8 @@ void pru_sim_kick_thread(struct pru_sim *sim);
 int pru_sim_intc_init(struct pru_sim *sim, struct device_node *np);
 void pru_sim_intc_exit(struct pru_sim *sim);
 void pru_sim_intc_collect(struct pru_sim *sim);
+int pru_sim_intc_map_firmware(struct pru_sim_core *pc);
+void pru_sim_intc_unmap_firmware(struct pru_sim_core *pc);
 
 void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root);
 void pru_sim_trace_pin(struct pru_sim *sim, u64 cycle, unsigned int pin, bool level);

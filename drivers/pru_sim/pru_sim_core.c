@@ -5,7 +5,9 @@
  * Each "prukit,pru-sim" child of the simulated PRU-ICSS is one rproc.  The
  * flow is the PRU Cookbook's: write a name to .../firmware, "start" to
  * .../state.  Firmware is a GNU pru-gcc ELF: code to IRAM, data to DRAM,
- * .pru_irq_map applied to the INTC, and a resource table, which may hold an
+ * .pru_irq_map routed in the INTC while the core runs (as the PRU remoteproc
+ * driver does: mapped at start, disposed of at stop, a conflicting route
+ * fails the start), and a resource table, which may hold an
  * rpmsg vdev: "kick" then raises the ARM -> PRU system event named by the
  * node's "kick" interrupt, and the PRU -> ARM event of its "vring" interrupt
  * runs the virtqueues, as TI's pru_rproc does.
@@ -32,6 +34,11 @@ static int pru_sim_start(struct rproc *rproc)
 {
 	struct pru_sim_core *pc = rproc->priv;
 	struct pru_sim *sim = pc->sim;
+	int ret;
+
+	ret = pru_sim_intc_map_firmware(pc);
+	if (ret)
+		return ret;
 
 	mutex_lock(&sim->lock);
 	prusim_core_reset(sim->s, pc->index, pc->elf.entry / 4);
@@ -53,6 +60,8 @@ static int pru_sim_stop(struct rproc *rproc)
 	prusim_core_enable(sim->s, pc->index, false);
 	prusim_core_reset(sim->s, pc->index, pc->elf.entry / 4);
 	mutex_unlock(&sim->lock);
+
+	pru_sim_intc_unmap_firmware(pc);
 	return 0;
 }
 
@@ -178,6 +187,26 @@ static irqreturn_t pru_sim_vring_thread(int irq, void *data)
 	return IRQ_HANDLED;
 }
 
+/*
+ * A running processor is shut down before it is deleted, whoever started
+ * it: 5.10's rproc_del() shuts down only auto-booted processors and would
+ * leave an rpmsg channel whose kick calls into this module after it is
+ * gone.  6.1's and 6.12's rproc_del() shut down any running processor; they
+ * then find it offline and do nothing more.  The same on every kernel, so
+ * this is no compat.h entry.
+ */
+static void pru_sim_core_shutdown(void *data)
+{
+	struct pru_sim_core *pc = data;
+	struct rproc *rproc = pc->rproc;
+
+	if (READ_ONCE(rproc->state) != RPROC_RUNNING)
+		return;
+	dev_info(pc->dev, "PRU%u still runs %s: shutting it down\n", pc->index,
+		 rproc->firmware);
+	rproc_shutdown(rproc);
+}
+
 /* The core leaves the simulator before its remote processor goes. */
 static void pru_sim_core_detach(void *data)
 {
@@ -255,6 +284,9 @@ static int pru_sim_core_probe(struct platform_device *pdev)
 	sim->core[pc->index] = pc;
 	mutex_unlock(&sim->lock);
 	ret = devm_add_action_or_reset(dev, pru_sim_core_detach, pc);
+	if (ret)
+		return ret;
+	ret = devm_add_action_or_reset(dev, pru_sim_core_shutdown, pc);
 	if (ret)
 		return ret;
 	dev_info(dev, "PRU%u: %s, firmware %s%s\n", pc->index, dev_name(&rproc->dev),

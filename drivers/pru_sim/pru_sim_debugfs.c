@@ -19,6 +19,7 @@
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
 #include <linux/debugfs.h>
+#include <linux/math64.h>
 #include <linux/fs.h>
 #include <linux/seq_file.h>
 #include <linux/slab.h>
@@ -338,10 +339,18 @@ bad:
 static int pru_sim_input_release(struct inode *inode, struct file *file)
 {
 	struct pru_sim_input_file *f = file->private_data;
+	struct dentry *dentry = file->f_path.dentry;
 
-	/* Opened only to read, or nothing written: nothing changes. */
-	if (f->len)
+	/*
+	 * Opened only to read, or nothing written: nothing changes.  debugfs
+	 * calls release even after the files were removed (the device was
+	 * unbound with this file open): then the simulator is gone, and the
+	 * text is dropped.  Holding the file keeps the removal waiting.
+	 */
+	if (f->len && !debugfs_file_get(dentry)) {
 		pru_sim_input_install(f);
+		debugfs_file_put(dentry);
+	}
 	kvfree(f->text);
 	kfree(f);
 	return 0;
@@ -400,7 +409,19 @@ static int pru_sim_stats_show(struct seq_file *m, void *v)
 	}
 	seq_printf(m, "trace_events %u trace_dropped %llu trace_origin %llu\n",
 		   sim->trace.count, sim->trace.dropped, sim->trace.origin);
+	seq_puts(m, "routes");
+	for (i = 0; i < PRUSIM_NUM_EVENTS; i++)
+		if (sim->mapped & BIT_ULL(i))
+			seq_printf(m, " %u:%u:%u", i, sim->route_ch[i], sim->route_host[i]);
+	seq_putc(m, '\n');
 	mutex_unlock(&sim->lock);
+
+	spin_lock_irq(&sim->stat_lock);
+	seq_printf(m, "irq_latency last %llu max %llu mean %llu count %llu\n",
+		   sim->lat_last, sim->lat_max,
+		   sim->lat_count ? div64_u64(sim->lat_sum, sim->lat_count) : 0,
+		   sim->lat_count);
+	spin_unlock_irq(&sim->stat_lock);
 	return 0;
 }
 DEFINE_SHOW_ATTRIBUTE(pru_sim_stats);

@@ -35,14 +35,29 @@
 
 /*
  * Cycles per slice while a core does real work.  The lock is held for a
- * slice, so this bounds how long a kick or a remoteproc operation waits.
+ * slice, so this bounds how long a kick or a remoteproc operation waits -
+ * in PRU cycles too: firmware spinning in a loop the idle detector cannot
+ * prove idle (prukit's rpmsg wait reads R31 and the vdev status into the
+ * same register) runs flat out, and a kick reaches it at the end of the
+ * slice.  A slice costs a lock, two clock reads and a look at the INTC:
+ * at 2000 cycles still well under 1% of the simulation.
  */
-#define PRU_SIM_SLICE		20000
+#define PRU_SIM_SLICE		2000
 static struct dentry *pru_sim_debugfs_root;
 
 static unsigned int slice_cycles = PRU_SIM_SLICE;
 module_param(slice_cycles, uint, 0444);
-MODULE_PARM_DESC(slice_cycles, "PRU cycles simulated between scheduling points (default 20000)");
+MODULE_PARM_DESC(slice_cycles, "PRU cycles simulated between scheduling points (default 2000)");
+
+/*
+ * A core that spins on a word of its memory (a driver's control block, say)
+ * waits for a store by the ARM, which nothing announces: while every core
+ * only waits and one of them spins, the thread looks again this often.
+ */
+static unsigned int idle_poll_us = 1000;
+module_param(idle_poll_us, uint, 0644);
+MODULE_PARM_DESC(idle_poll_us,
+		 "Microseconds between looks at a core spinning on memory the ARM may write (default 1000, 0: only on kicks)");
 
 void pru_sim_kick_thread(struct pru_sim *sim)
 {
@@ -111,9 +126,22 @@ static u32 pru_sim_input_cb(void *ctx, unsigned int port, u64 cycle, u64 *next_c
 	return pru_sim_input(ctx, port, cycle, next_change);
 }
 
+/*
+ * A host interrupt line rose.  If it goes to the ARM, end the slice now:
+ * the event is taken out of the INTC and delivered as soon as prusim_run()
+ * returns, not when the slice would have ended (which is up to
+ * slice_cycles later in simulated time).
+ */
 static void pru_sim_host_irq(void *ctx, u64 cycle, unsigned int host, bool level)
 {
-	/* The INTC is read after the slice; see pru_sim_intc_collect(). */
+	struct pru_sim *sim = ctx;
+	u64 strobe = cycle - min_t(u64, cycle, sim->s->cfg.event_latency);
+
+	if (!level || host < PRU_SIM_FIRST_ARM_HOST)
+		return;
+	if (!sim->irq_since)
+		sim->irq_since = strobe ?: 1;
+	prusim_yield(sim->s);
 }
 
 static const struct prusim_ops pru_sim_ops = {
@@ -130,6 +158,17 @@ static u64 pru_sim_insns(struct pru_sim *sim)
 	const struct prusim_core *c = sim->s->core;
 
 	return c[0].insns - c[0].skipped_insns + c[1].insns - c[1].skipped_insns;
+}
+
+/* A core executes a loop (perhaps one that reads memory the ARM writes). */
+static bool pru_sim_spinning(struct pru_sim *sim)
+{
+	unsigned int i;
+
+	for (i = 0; i < PRUSIM_NUM_CORES; i++)
+		if (sim->s->core[i].state == PRUSIM_RUNNING)
+			return true;
+	return false;
 }
 
 /* Log why a core stopped, once. */
@@ -155,22 +194,36 @@ static void pru_sim_report_stops(struct pru_sim *sim, bool *reported)
 /*
  * The simulation thread: run slices while a core has work; sleep while
  * every core is disabled, halted or only waiting for something that only
- * the outside can bring - a kick, new input, a start.  (The simulator skips
- * waits at no cost, so a slice that executed next to nothing means every
- * core waits; unless an input pattern or a queued action still has a change
- * to come, nothing inside can end the wait.)
+ * the outside can bring - a kick, new input, a start, a store into its
+ * memory.  (The simulator skips waits at no cost, so a slice that executed
+ * next to nothing means every core waits; unless an input pattern or a
+ * queued action still has a change to come, nothing inside can end the
+ * wait.)  Kicks, inputs and starts wake the thread; stores by the ARM do
+ * not, so while a core spins the thread looks again every idle_poll_us.
+ * It sleeps interruptibly: an idle simulator is no hung task.
  */
 static int pru_sim_thread(void *data)
 {
 	struct pru_sim *sim = data;
 	bool reported[PRUSIM_NUM_CORES] = { };
+	bool spinning = false;
 
 	while (!kthread_should_stop()) {
+		unsigned int poll_us = READ_ONCE(idle_poll_us);
+		ktime_t poll = ns_to_ktime((u64)poll_us * NSEC_PER_USEC);
 		u64 raise, insns, ran;
 		bool busy;
 		ktime_t t0;
 
-		wait_event(sim->wq, atomic_xchg(&sim->work, 0) || kthread_should_stop());
+		if (spinning && poll_us)
+			wait_event_interruptible_hrtimeout(sim->wq,
+							   atomic_read(&sim->work) ||
+							   kthread_should_stop(),
+							   poll);
+		else
+			wait_event_interruptible(sim->wq, atomic_read(&sim->work) ||
+						 kthread_should_stop());
+		atomic_set(&sim->work, 0);
 
 		do {
 			mutex_lock(&sim->lock);
@@ -181,19 +234,24 @@ static int pru_sim_thread(void *data)
 				prusim_raise_event(sim->s, ev);
 				raise &= raise - 1;
 			}
+			/* The ARM may have stored into PRU memory since the last slice. */
+			prusim_memory_written(sim->s);
 			busy = prusim_active(sim->s);
 			if (busy) {
 				insns = pru_sim_insns(sim);
 				t0 = ktime_get();
 				ran = prusim_run(sim->s, sim->slice_cycles);
 				sim->host_ns += ktime_to_ns(ktime_sub(ktime_get(), t0));
+				atomic64_set(&sim->cycle, sim->s->now);
 				insns = pru_sim_insns(sim) - insns;
-				if (insns < ran / 64 && sim->s->next_event == PRUSIM_NEVER &&
-				    !pru_sim_inputs_pending(sim))
+				if (sim->s->waiting ||
+				    (insns < ran / 64 && sim->s->next_event == PRUSIM_NEVER &&
+				     !pru_sim_inputs_pending(sim)))
 					busy = false;
 				pru_sim_intc_collect(sim);
 				pru_sim_report_stops(sim, reported);
 			}
+			spinning = !busy && pru_sim_spinning(sim);
 			mutex_unlock(&sim->lock);
 			cond_resched();
 		} while (busy && !kthread_should_stop() && !atomic_read(&sim->work));
@@ -262,6 +320,7 @@ static int pru_sim_probe(struct platform_device *pdev)
 {
 	struct device *dev = &pdev->dev;
 	struct device_node *np = dev->of_node;
+	struct prusim_config cfg;
 	struct pru_sim *sim;
 	int ret;
 
@@ -270,6 +329,7 @@ static int pru_sim_probe(struct platform_device *pdev)
 		return -ENOMEM;
 	sim->dev = dev;
 	mutex_init(&sim->lock);
+	spin_lock_init(&sim->stat_lock);
 	init_waitqueue_head(&sim->wq);
 	sim->slice_cycles = slice_cycles ?: PRU_SIM_SLICE;
 
@@ -284,7 +344,15 @@ static int pru_sim_probe(struct platform_device *pdev)
 		return ret;
 	if (!sim->s || !sim->trace.rec)
 		return -ENOMEM;
-	prusim_init(sim->s, NULL, &pru_sim_ops, sim);
+	prusim_default_config(&cfg);
+	/* Routed when a core starts, undone when it stops: pru_sim_core.c */
+	cfg.irq_map_by_embedder = true;
+	/*
+	 * While every core waits for the ARM the thread sleeps, and simulated
+	 * time stands still; it does not leap a slice ahead first.
+	 */
+	cfg.stop_when_idle = true;
+	prusim_init(sim->s, &cfg, &pru_sim_ops, sim);
 
 	ret = pru_sim_intc_init(sim, np);
 	if (ret)

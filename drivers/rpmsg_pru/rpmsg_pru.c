@@ -394,8 +394,16 @@ static int rpmsg_pru_open(struct inode *inode, struct file *filp)
 {
 	struct rpmsg_pru_port *port = container_of(inode->i_cdev, struct rpmsg_pru_port, cdev);
 
+	int ret;
+
 	rpmsg_pru_attach_file(port, filp);
-	return stream_open(inode, filp);
+	ret = stream_open(inode, filp);
+	/*
+	 * Reads and writes honour IOCB_NOWAIT as O_NONBLOCK: preadv2()/
+	 * pwritev2() with RWF_NOWAIT get EAGAIN instead of EOPNOTSUPP.
+	 */
+	filp->f_mode |= FMODE_NOWAIT;
+	return ret;
 }
 
 static int rpmsg_pru_release(struct inode *inode, struct file *filp)

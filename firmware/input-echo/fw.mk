@@ -3,3 +3,4 @@
 fw-srcs := input-echo.c
 fw-cores := 0 1
 fw-stack-size := 0x100
+fw-test := y

@@ -5,3 +5,4 @@ fw-cores := 0 1
 fw-cflags-pru0 := -DIRQ_TEST_EVENT=20
 fw-cflags-pru1 := -DIRQ_TEST_EVENT=21
 fw-stack-size := 0x100
+fw-test := y

@@ -61,8 +61,9 @@ static inline void pru_ctrl_write(unsigned int core, uint32_t off, uint32_t val)
 #ifdef PRUSS_LOCAL_CTRL
 /*
  * Cycle counter of this core.  CYCLE does not wrap: at 0xffffffff it stops
- * and CTR_EN clears.  It can only be written while counting is disabled, so
- * restart it like this.
+ * and CTR_EN clears, so restart it like this (which also works while it
+ * counts: a store to CYCLE sets it and clears STALL, taking effect a cycle
+ * later - the PRU Cookbook's section 7.3 measurement, modelled by prusim).
  */
 static inline void pru_cycle_counter_restart(void)
 {

@@ -36,6 +36,14 @@
  * resource table (which is in this core's data RAM, hence volatile).
  * Nothing a buffer descriptor or message header says is followed unless it
  * is in range: see Documentation/firmware-rpmsg.rst for the exact rules.
+ *
+ * Linux may take the rings away at any time: remoteproc resets the vdev
+ * (its status byte in the resource table goes to 0) and frees the buffers
+ * and rings before it stops the core.  The library reads the status byte
+ * right before it claims a buffer and right before every write into ARM
+ * memory, and touches nothing there once DRIVER_OK is gone; it then waits
+ * for Linux to come back, sets the rings up again and re-announces, as at
+ * start (the call that saw it returns -ECONNRESET).
  * Layouts are the virtio legacy split ring (little endian) and the remoteproc
  * resource table format of include/linux/remoteproc.h; the names here are
  * our own.
@@ -46,6 +54,8 @@
 #include <assert.h>
 #include <stdint.h>
 
+#include <prukit/ocp.h>
+
 #include <rpmsg_pru_proto.h>
 
 /* Resource table (remoteproc) */
@@ -55,6 +65,15 @@
 #define PRUKIT_VIRTIO_S_ACKNOWLEDGE	1
 #define PRUKIT_VIRTIO_S_DRIVER		2
 #define PRUKIT_VIRTIO_S_DRIVER_OK	4
+
+/*
+ * Set by the firmware in the vdev's gfeatures once it has set the rings up
+ * for the session Linux started.  Linux writes gfeatures (without this bit)
+ * whenever a virtio driver binds to the vdev and never reads it back, so a
+ * clear bit means a session the firmware did not set up: one that began
+ * while it was not looking, after a reset it did not see.
+ */
+#define PRUKIT_RPMSG_GF_SESSION		(1u << 31)
 
 /* Split virtqueue */
 #define PRUKIT_VRING_NUM		16	/* buffers per vring, a power of two */
@@ -187,6 +206,7 @@ static_assert(PRUKIT_VRING_USED_OFF == 304, "vring layout for num 16, align 16")
 #define PRUKIT_RPMSG_ST_DESC_IDX	(1u << 2)	/* descriptor index >= num */
 #define PRUKIT_RPMSG_ST_DESC		(1u << 3)	/* buffer address/length unusable */
 #define PRUKIT_RPMSG_ST_MSG_LEN		(1u << 4)	/* header len > buffer or 496 */
+#define PRUKIT_RPMSG_ST_RESET		(1u << 5)	/* Linux reset the vdev */
 #define PRUKIT_RPMSG_ST_READY		(1u << 8)	/* DRIVER_OK seen, rings valid */
 #define PRUKIT_RPMSG_ST_ANNOUNCED	(1u << 9)	/* name service message sent */
 
@@ -206,6 +226,7 @@ struct prukit_rpmsg_stats {
 	uint32_t err_desc_idx;	/* avail ring entry >= num */
 	uint32_t err_desc;	/* buffer not in OCP space, wraps, too short */
 	uint32_t err_msg_len;	/* received header len > buffer or > 496 */
+	uint32_t resets;	/* sessions lost: DRIVER_OK gone, or a new session */
 };
 
 struct prukit_vring {
@@ -219,19 +240,35 @@ struct prukit_vring {
 struct prukit_rpmsg {
 	struct prukit_rpmsg_stats stats;
 	struct prukit_vring vq[2];	/* PRUKIT_RPMSG_VQ_TX, _RX */
-	uint32_t port;			/* our address (30 or 31) */
+	uint32_t port;			/* our address: the src of what we send */
 	uint32_t peer;			/* src of the first received message */
+	uint32_t dst;			/* dst of the last received message */
+	/* the vdev served: status, gfeatures and vrings in the resource table */
+	volatile struct prukit_rsc_vdev *vdev;
+	/* announced at start and again after a reset; NULL: nothing */
+	const struct prukit_rpmsg_ns_msg *ns;
+	uint32_t starting;		/* inside the start-up sequence */
 };
 
-/* The resource table, in .resource_table (defined by rpmsg.c) */
-extern struct prukit_rpmsg_rsc_table prukit_resource_table;
+/*
+ * The resource table is rpmsg.c's prukit_resource_table (a struct
+ * prukit_rpmsg_rsc_table in .resource_table); it is not declared here, so
+ * that firmware using only prukit_ocp_copy() from this header can have
+ * PRUKIT_RESOURCE_TABLE_EMPTY().
+ */
 
 /*
  * Enable the OCP master port, wait until Linux has set DRIVER_OK, check the
- * vrings and announce "rpmsg-pru" at this core's port (waiting for a buffer
- * if Linux has not given one yet).  Returns 0, or -EINVAL (and
+ * vrings and announce "rpmsg-pru" at this core's port (waiting for a kick
+ * while Linux has no buffer, or its ring index is out of range).  Returns
+ * 0, or -EINVAL (and
  * PRUKIT_RPMSG_ST_BAD_RSC) if the table holds unusable vrings: then nothing
  * else must be called.
+ *
+ * After a reset (DRIVER_OK gone, see above) recv, send and wait do the same
+ * again themselves - wait for DRIVER_OK, set the rings up, announce - and
+ * only then return; a table that has become unusable is waited out (until
+ * Linux resets the vdev again) rather than returned.
  */
 int prukit_rpmsg_init(struct prukit_rpmsg *rp);
 
@@ -242,8 +279,12 @@ int prukit_rpmsg_init(struct prukit_rpmsg *rp);
  */
 int prukit_rpmsg_kicked(struct prukit_rpmsg *rp);
 
-/* Busy-wait for a kick (prukit_rpmsg_kicked() in a loop). */
-void prukit_rpmsg_wait(struct prukit_rpmsg *rp);
+/*
+ * Busy-wait for a kick (prukit_rpmsg_kicked() in a loop), watching the vdev
+ * meanwhile: if Linux resets it, wait for it to come back, set the rings up
+ * again, re-announce and return -ECONNRESET; else 0.
+ */
+int prukit_rpmsg_wait(struct prukit_rpmsg *rp);
 
 /*
  * Take the next message from vring 1: copy its payload (at most
@@ -251,7 +292,9 @@ void prukit_rpmsg_wait(struct prukit_rpmsg *rp);
  * to *src, give the buffer back to Linux and kick the ARM unless it asked not
  * to be.  Returns 0; -EAGAIN if there is none; -EBADMSG if the buffer was
  * malformed (given back unread, counted; call again for the next one);
- * -EIO if the ring's index is out of range (nothing taken, counted).
+ * -EIO if the ring's index is out of range (nothing taken, counted);
+ * -ECONNRESET if Linux had reset the vdev (nothing received; the rings have
+ * been set up again and the channel re-announced, rp->peer forgotten).
  */
 int prukit_rpmsg_recv(struct prukit_rpmsg *rp, void *data, uint16_t *len, uint32_t *src);
 
@@ -260,33 +303,10 @@ int prukit_rpmsg_recv(struct prukit_rpmsg *rp, void *data, uint16_t *len, uint32
  * address dst, from this core's port, in the next free buffer of vring 0,
  * and kick the ARM unless it asked not to be.  Malformed buffers on the way
  * are skipped and counted.  Returns 0; -EAGAIN if Linux has no free buffer
- * (wait for a kick, try again); -EMSGSIZE; -EIO as prukit_rpmsg_recv().
+ * (wait for a kick, try again); -EMSGSIZE; -EIO and -ECONNRESET as
+ * prukit_rpmsg_recv() (after -ECONNRESET the message was not sent, and dst
+ * belonged to the session that is gone).
  */
 int prukit_rpmsg_send(struct prukit_rpmsg *rp, uint32_t dst, const void *data, uint16_t len);
-
-/*
- * Copy len bytes between any two addresses the core can reach (data RAM,
- * shared RAM, OCP) in bursts of 48 bytes through r18..r29 (lib/ocp_copy.S).
- * A load from DDR costs its latency once per burst rather than once per word.
- * Prefer the two wrappers, which tell GCC which local object is written or
- * read (it cannot see through an address passed as an integer).
- */
-void prukit_ocp_copy(uint32_t dst, uint32_t src, uint32_t len);
-
-/* OCP (or any) address src -> local object dst */
-static inline void prukit_ocp_read(void *dst, uint32_t src, uint32_t len)
-{
-	/* dst escapes here: the call below may change what it points to */
-	__asm__ __volatile__("" : : "r"(dst) : "memory");
-	prukit_ocp_copy((uint32_t)(uintptr_t)dst, src, len);
-}
-
-/* local object src -> OCP (or any) address dst */
-static inline void prukit_ocp_write(uint32_t dst, const void *src, uint32_t len)
-{
-	/* src escapes here: stores to it must be done before the call */
-	__asm__ __volatile__("" : : "r"(src) : "memory");
-	prukit_ocp_copy(dst, (uint32_t)(uintptr_t)src, len);
-}
 
 #endif /* _PRUKIT_RPMSG_H */

@@ -1,0 +1,477 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * prukit_pru - the one way every prukit driver takes and uses a PRU core
+ *
+ * The contract (Documentation/writing-a-driver.rst), the same on a board
+ * and under pru_sim:
+ *  - the driver's node names its cores in "ti,prus" (and their firmware in
+ *    "firmware-name"); devm_prukit_pru_get() holds one, exclusively, until
+ *    the driver unbinds, and the driver core unbinds the driver before the
+ *    core's own device goes (a device link);
+ *  - prukit_pru_boot() sets the firmware and starts the core; the layer
+ *    shuts it down again when the driver unbinds;
+ *  - the control block (include/prukit/pru_ctrl.h) in the core's data RAM
+ *    is reached through prukit_pru_map() as __iomem, checked with
+ *    prukit_pru_ctrl_check(), and commands go through it without any
+ *    interrupt towards the PRU;
+ *  - PRU -> ARM events are ordinary interrupts of the driver's own node
+ *    (devm_prukit_pru_request_irq());
+ *  - bulk data lives in DMA buffers of the driver's device (32-bit, set up
+ *    here), whose bus addresses the PRU reaches over its OCP master port.
+ */
+#define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
+
+#include <linux/delay.h>
+#include <linux/device.h>
+#include <linux/dma-mapping.h>
+#include <linux/err.h>
+#include <linux/io.h>
+#include <linux/jiffies.h>
+#include <linux/list.h>
+#include <linux/module.h>
+#include <linux/mutex.h>
+#include <linux/of.h>
+#include <linux/of_irq.h>
+#include <linux/of_platform.h>
+#include <linux/platform_device.h>
+#include <linux/remoteproc.h>
+#include <linux/slab.h>
+
+#include "compat.h"
+#include "prukit_pru.h"
+
+/* Cores taken through rproc_get_by_phandle(), which does not claim them. */
+struct prukit_pru_claim {
+	struct list_head node;
+	struct rproc *rproc;
+	struct device *owner;
+};
+
+static LIST_HEAD(prukit_pru_claims);
+static DEFINE_MUTEX(prukit_pru_claims_lock);	/* protects prukit_pru_claims */
+
+static int prukit_pru_claim(struct device *dev, struct rproc *rproc)
+{
+	struct prukit_pru_claim *c;
+	int ret = 0;
+
+	mutex_lock(&prukit_pru_claims_lock);
+	list_for_each_entry(c, &prukit_pru_claims, node) {
+		if (c->rproc == rproc) {
+			dev_err(dev, "PRU %s is already used by %s\n", dev_name(&rproc->dev),
+				dev_name(c->owner));
+			ret = -EBUSY;
+			goto unlock;
+		}
+	}
+	c = kzalloc(sizeof(*c), GFP_KERNEL);
+	if (!c) {
+		ret = -ENOMEM;
+		goto unlock;
+	}
+	c->rproc = rproc;
+	c->owner = dev;
+	list_add(&c->node, &prukit_pru_claims);
+unlock:
+	mutex_unlock(&prukit_pru_claims_lock);
+	return ret;
+}
+
+static void prukit_pru_unclaim(struct rproc *rproc)
+{
+	struct prukit_pru_claim *c;
+
+	mutex_lock(&prukit_pru_claims_lock);
+	list_for_each_entry(c, &prukit_pru_claims, node) {
+		if (c->rproc == rproc) {
+			list_del(&c->node);
+			kfree(c);
+			break;
+		}
+	}
+	mutex_unlock(&prukit_pru_claims_lock);
+}
+
+/*
+ * The core's remote processor, from whichever driver owns the core: the
+ * kernel's PRU remoteproc driver hands its cores out with pru_rproc_get(),
+ * which answers -ENODEV for a core that is not its own (pru_sim's, say);
+ * those are found with rproc_get_by_phandle().  Nothing registered yet:
+ * -EPROBE_DEFER; a core bound to a driver that is no remote processor (UIO):
+ * a clear error.
+ */
+static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node *np)
+{
+	struct device *dev = pru->dev;
+	struct platform_device *pdev;
+	struct rproc *rproc;
+
+	rproc = prukit_pru_rproc_get(dev->of_node, pru->index);
+	if (!IS_ERR(rproc)) {
+		pru->via_pru_rproc = true;
+		return rproc;
+	}
+	if (PTR_ERR(rproc) != -ENODEV)
+		return rproc;
+
+	rproc = rproc_get_by_phandle(np->phandle);
+	if (rproc)
+		return rproc;
+
+	pdev = of_find_device_by_node(np);
+	if (pdev) {
+		const char *drv = pdev->dev.driver ? pdev->dev.driver->name : NULL;
+
+		put_device(&pdev->dev);
+		if (drv) {
+			dev_err(dev, "PRU %pOF is bound to %s, which is no remote processor driver\n",
+				np, drv);
+			return ERR_PTR(-EBUSY);
+		}
+	}
+	return ERR_PTR(-EPROBE_DEFER);
+}
+
+static void prukit_pru_release(void *data)
+{
+	struct prukit_pru *pru = data;
+
+	prukit_pru_shutdown(pru);
+	if (pru->via_pru_rproc) {
+		prukit_pru_rproc_put(pru->rproc);
+	} else {
+		prukit_pru_unclaim(pru->rproc);
+		rproc_put(pru->rproc);
+	}
+}
+
+/**
+ * devm_prukit_pru_get() - take a PRU core named in the device's "ti,prus"
+ * @dev: the consumer device; its node has "ti,prus" and maybe "firmware-name"
+ * @index: which entry of "ti,prus"
+ *
+ * The core is held exclusively until @dev unbinds; then it is shut down (if
+ * prukit_pru_boot() started it) and released.  A device link makes the
+ * driver core unbind @dev before the core's device goes away.  @dev gets a
+ * 32-bit DMA mask: the PRU's OCP master port addresses 32 bits.
+ *
+ * Return: the core, or an ERR_PTR(): -EPROBE_DEFER until the core's driver
+ * registered it, -EBUSY if another driver holds it, -EINVAL for a bad
+ * "ti,prus" (each with a message; defer is silent).
+ */
+struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
+{
+	struct device_node *np;
+	struct prukit_pru *pru;
+	struct rproc *rproc;
+	int ret;
+
+	pru = devm_kzalloc(dev, sizeof(*pru), GFP_KERNEL);
+	if (!pru)
+		return ERR_PTR(-ENOMEM);
+	pru->dev = dev;
+	pru->index = index;
+
+	np = of_parse_phandle(dev->of_node, "ti,prus", index);
+	if (!np)
+		return ERR_PTR(dev_err_probe(dev, -EINVAL, "no \"ti,prus\" entry %u\n", index));
+	rproc = prukit_pru_find(pru, np);
+	if (IS_ERR(rproc)) {
+		ret = PTR_ERR(rproc);
+		dev_err_probe(dev, ret, "PRU %pOF not available\n", np);
+		of_node_put(np);
+		return ERR_PTR(ret);
+	}
+	of_node_put(np);
+	pru->rproc = rproc;
+	if (!pru->via_pru_rproc) {
+		ret = prukit_pru_claim(dev, rproc);
+		if (ret) {
+			rproc_put(rproc);
+			return ERR_PTR(ret);
+		}
+	}
+	ret = devm_add_action_or_reset(dev, prukit_pru_release, pru);
+	if (ret)
+		return ERR_PTR(ret);
+
+	if (!device_link_add(dev, rproc->dev.parent, DL_FLAG_AUTOREMOVE_CONSUMER))
+		return ERR_PTR(dev_err_probe(dev, -EINVAL, "cannot link to PRU %s\n",
+					     dev_name(&rproc->dev)));
+
+	if (of_property_read_string_index(dev->of_node, "firmware-name", index, &pru->firmware))
+		pru->firmware = NULL;
+
+	ret = dma_coerce_mask_and_coherent(dev, DMA_BIT_MASK(32));
+	if (ret)
+		return ERR_PTR(dev_err_probe(dev, ret, "no 32-bit DMA\n"));
+	return pru;
+}
+EXPORT_SYMBOL_PRUKIT(devm_prukit_pru_get);
+
+/**
+ * prukit_pru_boot() - load firmware into the core and start it
+ * @pru: the core
+ * @firmware: file under /lib/firmware, or NULL for the "firmware-name" entry
+ *
+ * Fails with -EBUSY if the core already runs (started through remoteproc
+ * sysfs, say): prukit never takes over firmware someone else started.
+ * prukit_pru_shutdown(), or the driver unbinding, stops it again.
+ *
+ * Return: 0 or a negative errno (also logged).
+ */
+int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
+{
+	struct rproc *rproc = pru->rproc;
+	int ret;
+
+	if (pru->booted)
+		return -EBUSY;
+	firmware = firmware ?: pru->firmware;
+	if (!firmware) {
+		dev_err(pru->dev, "no firmware for PRU %s (\"firmware-name\")\n",
+			dev_name(&rproc->dev));
+		return -EINVAL;
+	}
+	if (READ_ONCE(rproc->state) != RPROC_OFFLINE) {
+		dev_err(pru->dev, "PRU %s already runs %s; stop it first (remoteproc sysfs \"state\")\n",
+			dev_name(&rproc->dev), rproc->firmware);
+		return -EBUSY;
+	}
+	ret = prukit_rproc_set_firmware(rproc, firmware);
+	if (ret) {
+		dev_err(pru->dev, "cannot set firmware %s on PRU %s: %d\n", firmware,
+			dev_name(&rproc->dev), ret);
+		return ret;
+	}
+	ret = rproc_boot(rproc);
+	if (ret) {
+		dev_err(pru->dev, "PRU %s did not start %s: %d\n", dev_name(&rproc->dev),
+			firmware, ret);
+		return ret;
+	}
+	pru->booted = true;
+	pru->seq = 0;
+	return 0;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_boot);
+
+/**
+ * prukit_pru_shutdown() - stop the core that prukit_pru_boot() started
+ * @pru: the core
+ *
+ * Does nothing if the driver did not boot it.  A core stopped behind the
+ * driver's back (remoteproc sysfs) is only forgotten.
+ */
+void prukit_pru_shutdown(struct prukit_pru *pru)
+{
+	if (!pru->booted)
+		return;
+	pru->booted = false;
+	if (READ_ONCE(pru->rproc->state) == RPROC_RUNNING)
+		rproc_shutdown(pru->rproc);
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_shutdown);
+
+/**
+ * prukit_pru_running() - whether the driver's firmware still runs
+ * @pru: the core
+ *
+ * False once someone stopped the core through remoteproc sysfs (or it
+ * crashed): a driver checks it before it waits for the firmware, and the
+ * waits below return -EPIPE when it turns false.
+ *
+ * Return: true while the core runs the firmware prukit_pru_boot() started.
+ */
+bool prukit_pru_running(struct prukit_pru *pru)
+{
+	return pru->booted && READ_ONCE(pru->rproc->state) == RPROC_RUNNING;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_running);
+
+/**
+ * prukit_pru_map() - the core's memory at a device address, for the ARM
+ * @pru: the core
+ * @da: device address as the core sees it (its data RAM at 0, shared RAM
+ *	at 0x10000)
+ * @len: bytes
+ *
+ * The real PRU remoteproc driver hands out ioremapped (Device) memory,
+ * pru_sim plain RAM: access it only with readl()/writel()/memcpy_toio()/
+ * memcpy_fromio(), so that what passes under pru_sim works on a board.
+ * Valid while the firmware is loaded.
+ *
+ * Return: the mapping, or NULL if @da..@da+@len is no memory of the core.
+ */
+void __iomem *prukit_pru_map(struct prukit_pru *pru, u32 da, size_t len)
+{
+	bool is_iomem = false;
+	void *va;
+
+	va = prukit_rproc_da_to_va(pru->rproc, da, len, &is_iomem);
+	if (!va)
+		dev_err(pru->dev, "PRU %s has no memory at 0x%x (%zu bytes)\n",
+			dev_name(&pru->rproc->dev), da, len);
+	return (void __force __iomem *)va;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_map);
+
+/**
+ * prukit_pru_ctrl_check() - is this the firmware the driver speaks with?
+ * @pru: the core
+ * @ctrl: the control block (prukit_pru_map() of PRUKIT_CTRL_DA)
+ * @magic: the driver's protocol magic
+ * @version: the protocol version the driver speaks
+ * @size: sizeof the driver's control block
+ *
+ * The image initialises the header, so this works right after the boot.
+ *
+ * Return: 0, or -EPROTO with a line in dmesg saying what disagrees.
+ */
+int prukit_pru_ctrl_check(struct prukit_pru *pru, void __iomem *ctrl, u32 magic,
+			  u16 version, u16 size)
+{
+	u32 m = readl(ctrl + offsetof(struct prukit_ctrl_hdr, magic));
+	u16 v = readw(ctrl + offsetof(struct prukit_ctrl_hdr, version));
+	u16 s = readw(ctrl + offsetof(struct prukit_ctrl_hdr, size));
+	const char *fw = pru->rproc->firmware;
+
+	if (m != magic) {
+		dev_err(pru->dev, "%s is not this driver's firmware: control block magic 0x%08x, expected 0x%08x\n",
+			fw, m, magic);
+		return -EPROTO;
+	}
+	if (v != version || s != size) {
+		dev_err(pru->dev, "%s speaks protocol version %u (%u-byte control block), the driver version %u (%u bytes): rebuild the firmware with this driver\n",
+			fw, v, s, version, size);
+		return -EPROTO;
+	}
+	return 0;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_check);
+
+/*
+ * Poll the status word until @done says so, the firmware stops or time
+ * runs out.  Polls every 100-200 us; pru_sim answers within about a
+ * millisecond of host time, a real PRU within microseconds.
+ */
+static int prukit_pru_poll(struct prukit_pru *pru, void __iomem *ctrl, u32 want_seq,
+			   bool any_seq, unsigned int timeout_ms, const char *what, u32 *status)
+{
+	unsigned long deadline = jiffies + msecs_to_jiffies(timeout_ms);
+	void __iomem *st = ctrl + offsetof(struct prukit_ctrl_hdr, status);
+	bool last = false;
+
+	for (;;) {
+		u32 v = readl(st);
+
+		if ((v & PRUKIT_CTRL_READY) && (any_seq || PRUKIT_CTRL_SEQ(v) == want_seq)) {
+			*status = v;
+			return 0;
+		}
+		if (!prukit_pru_running(pru)) {
+			dev_err(pru->dev, "PRU %s stopped while the driver waited for %s\n",
+				dev_name(&pru->rproc->dev), what);
+			return -EPIPE;
+		}
+		if (last)
+			break;
+		last = time_after(jiffies, deadline);
+		usleep_range(100, 200);
+	}
+	dev_err(pru->dev, "%s on PRU %s: no answer to %s within %u ms\n",
+		pru->rproc->firmware, dev_name(&pru->rproc->dev), what, timeout_ms);
+	return -ETIMEDOUT;
+}
+
+/**
+ * prukit_pru_ctrl_wait_ready() - wait until the firmware polls its block
+ * @pru: the core
+ * @ctrl: the control block
+ * @timeout_ms: how long (PRUKIT_PRU_TIMEOUT_MS suits pru_sim as well)
+ *
+ * Return: 0; -ETIMEDOUT (logged with the firmware's name) if the firmware
+ * never set PRUKIT_CTRL_READY; -EPIPE if the core stopped.
+ */
+int prukit_pru_ctrl_wait_ready(struct prukit_pru *pru, void __iomem *ctrl,
+			       unsigned int timeout_ms)
+{
+	u32 status;
+
+	return prukit_pru_poll(pru, ctrl, 0, true, timeout_ms, "its start", &status);
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_wait_ready);
+
+/**
+ * prukit_pru_ctrl_command() - send a command and wait for its result
+ * @pru: the core
+ * @ctrl: the control block; the command's parameters are already written
+ * @opcode: the driver protocol's command
+ * @timeout_ms: how long to wait for the answer
+ *
+ * Writes @command (after every parameter: writel() orders the stores) and
+ * polls @status until the firmware answers that sequence number.  Callers
+ * serialise commands to one control block.
+ *
+ * Return: the firmware's result (0 for success, positive: the protocol's
+ * error codes), or -ETIMEDOUT/-EPIPE as prukit_pru_ctrl_wait_ready().
+ */
+int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode,
+			    unsigned int timeout_ms)
+{
+	char what[32];
+	u32 status;
+	int ret;
+
+	if (!prukit_pru_running(pru))
+		return -EPIPE;
+	pru->seq = pru->seq == U16_MAX ? 1 : pru->seq + 1;
+	writel(PRUKIT_CTRL_CMD(opcode, pru->seq),
+	       ctrl + offsetof(struct prukit_ctrl_hdr, command));
+	snprintf(what, sizeof(what), "command %u", opcode);
+	ret = prukit_pru_poll(pru, ctrl, pru->seq, false, timeout_ms, what, &status);
+	if (ret)
+		return ret;
+	return PRUKIT_CTRL_RESULT(status);
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_command);
+
+/**
+ * devm_prukit_pru_request_irq() - request a PRU -> ARM event of the node
+ * @dev: the consumer device
+ * @name: its "interrupt-names" entry, or NULL for the first interrupt
+ * @handler: hard interrupt handler (or NULL with @thread_fn)
+ * @thread_fn: threaded handler, or NULL
+ * @flags: IRQF_* (IRQF_ONESHOT is added with a NULL @handler)
+ * @data: passed to the handlers
+ *
+ * The rule for events: a consumer's events come from its own
+ * "interrupts-extended = <&pruss_intc EVENT CHANNEL HOST>", never from the
+ * firmware's .pru_irq_map, whose mappings the PRU remoteproc driver
+ * disposes of when the core stops.
+ *
+ * Return: the Linux interrupt number, or a negative errno (-EPROBE_DEFER
+ * until the INTC is there).
+ */
+int devm_prukit_pru_request_irq(struct device *dev, const char *name,
+				irq_handler_t handler, irq_handler_t thread_fn,
+				unsigned long flags, void *data)
+{
+	int irq, ret;
+
+	irq = name ? of_irq_get_byname(dev->of_node, name) : of_irq_get(dev->of_node, 0);
+	if (irq <= 0)
+		return dev_err_probe(dev, irq ?: -ENXIO, "no PRU event interrupt %s\n",
+				     name ?: "");
+	if (!handler)
+		flags |= IRQF_ONESHOT;
+	ret = devm_request_threaded_irq(dev, irq, handler, thread_fn, flags, dev_name(dev), data);
+	if (ret)
+		return dev_err_probe(dev, ret, "cannot request interrupt %d\n", irq);
+	return irq;
+}
+EXPORT_SYMBOL_PRUKIT(devm_prukit_pru_request_irq);
+
+MODULE_DESCRIPTION("prukit: the shared way drivers take and use a PRU core");
+MODULE_AUTHOR("prukit developers");
+MODULE_LICENSE("GPL");

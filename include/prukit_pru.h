@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * prukit_pru - how every prukit driver takes and uses a PRU core
+ *
+ * See Documentation/writing-a-driver.rst.  The symbols are exported in the
+ * PRUKIT module namespace; a driver says PRUKIT_IMPORT_NS() (compat.h's
+ * MODULE_IMPORT_NS(PRUKIT), whose form changed in v6.13).
+ */
+#ifndef _PRUKIT_PRU_H
+#define _PRUKIT_PRU_H
+
+#include <linux/interrupt.h>
+#include <linux/types.h>
+
+#include "prukit/pru_ctrl.h"
+
+struct device;
+struct rproc;
+
+/* Default for firmware answers: generous, because pru_sim runs slower. */
+#define PRUKIT_PRU_TIMEOUT_MS		5000
+
+/**
+ * struct prukit_pru - one PRU core held by a prukit driver
+ * @dev: the consumer device (the driver's)
+ * @rproc: the core's remote processor
+ * @index: position of the core in the consumer's "ti,prus"
+ * @firmware: the consumer's "firmware-name" entry for it, or NULL
+ * @via_pru_rproc: taken with pru_rproc_get() (the kernel's PRU remoteproc
+ *	driver owns the core), not with rproc_get_by_phandle()
+ * @booted: prukit_pru_boot() succeeded and no shutdown followed
+ * @seq: sequence number of the last command sent
+ *
+ * Drivers read @rproc and @dev; the rest belongs to the layer.
+ */
+struct prukit_pru {
+	struct device *dev;
+	struct rproc *rproc;
+	unsigned int index;
+	const char *firmware;
+	bool via_pru_rproc;
+	bool booted;
+	u16 seq;
+};
+
+struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index);
+int prukit_pru_boot(struct prukit_pru *pru, const char *firmware);
+void prukit_pru_shutdown(struct prukit_pru *pru);
+bool prukit_pru_running(struct prukit_pru *pru);
+void __iomem *prukit_pru_map(struct prukit_pru *pru, u32 da, size_t len);
+int prukit_pru_ctrl_check(struct prukit_pru *pru, void __iomem *ctrl, u32 magic,
+			  u16 version, u16 size);
+int prukit_pru_ctrl_wait_ready(struct prukit_pru *pru, void __iomem *ctrl,
+			       unsigned int timeout_ms);
+int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode,
+			    unsigned int timeout_ms);
+int devm_prukit_pru_request_irq(struct device *dev, const char *name,
+				irq_handler_t handler, irq_handler_t thread_fn,
+				unsigned long flags, void *data);
+
+#endif /* _PRUKIT_PRU_H */
