@@ -12,6 +12,18 @@
  * little as it can (avail flags and idx in one 32-bit load, the descriptor
  * and the message header in one 16-byte burst each, payloads in 48-byte
  * bursts) and never reads the used ring, which only we write.
+ *
+ * Linux can take the rings away at any moment: when it stops the core,
+ * remoteproc first resets the vdev (status byte 0) and frees the buffers and
+ * rings, and only then halts the core.  So the vdev's status byte (in our data
+ * RAM, 3 cycles to read) is read again right before a buffer is claimed and
+ * right before every write into ARM memory; once DRIVER_OK is gone nothing
+ * there is touched again until Linux has set the vdev up anew.
+ *
+ * Built on its own (fw-lib-srcs := rpmsg.c) this file also defines the
+ * resource table and the .pru_irq_map.  pru_rpmsg.c (the support package's
+ * API) includes it with PRUKIT_RPMSG_EXTERNAL_TABLE defined instead: then the
+ * program brings its own table, and struct prukit_rpmsg's vdev points into it.
  */
 #include <errno.h>
 #include <stddef.h>
@@ -30,6 +42,10 @@
 
 #define VRING_MASK	(PRUKIT_VRING_NUM - 1)
 
+#ifdef PRUKIT_RPMSG_EXTERNAL_TABLE
+/* The program's own table: rp->vdev points into it. */
+#define RP_VDEV(rp)	((rp)->vdev)
+#else
 struct prukit_rpmsg_rsc_table prukit_resource_table PRUKIT_RSC_SECTION = {
 	.ver = PRUKIT_RSC_TABLE_VERSION,
 	.num = 1,
@@ -79,6 +95,11 @@ static const struct prukit_rpmsg_ns_msg prukit_rpmsg_ns = {
 	.flags = PRUKIT_RPMSG_NS_CREATE,
 };
 
+/* Our table, at an address the linker knows: no pointer to load. */
+#define RP_VDEV(rp)							\
+	((void)(rp), (volatile struct prukit_rsc_vdev *)&prukit_resource_table.vdev)
+#endif
+
 static inline uint32_t ocp_read32(uint32_t addr)
 {
 	return *(volatile uint32_t *)(uintptr_t)addr;
@@ -103,6 +124,54 @@ static void note(struct prukit_rpmsg *rp, uint32_t *counter, uint32_t status)
 {
 	(*counter)++;
 	rp->stats.status |= status;
+}
+
+/*
+ * Is DRIVER_OK still set?  Read right before a buffer is claimed and right
+ * before every write into ARM memory: once Linux has reset the vdev it frees
+ * the buffers and the rings, and nothing there may be touched any more.
+ */
+#define DRIVER_OK_BIT	2	/* PRUKIT_VIRTIO_S_DRIVER_OK */
+static_assert(PRUKIT_VIRTIO_S_DRIVER_OK == 1u << DRIVER_OK_BIT, "DRIVER_OK is bit 2");
+
+/*
+ * Go to label if DRIVER_OK is gone: one load of the word that starts with
+ * the status byte (then num_of_vrings and two reserved bytes; little endian)
+ * and one QBBC - GCC 12 would test the bit with AND and QBEQ.
+ */
+#define GOTO_IF_VDEV_GONE(rp, label)					\
+	do {								\
+		uint32_t st_ = *(volatile uint32_t *)&RP_VDEV(rp)->status; \
+									\
+		__asm__ goto("qbbc %l[" #label "], %0, %1"		\
+			     : : "r"(st_), "i"(DRIVER_OK_BIT) : : label); \
+	} while (0)
+
+/*
+ * Have these values in registers before the next check: GCC would otherwise
+ * compute addresses (and load from data RAM) between the check and the
+ * stores it guards, widening the window.
+ */
+#define IN_REGS(a, b)	__asm__ __volatile__("" : : "r"(a), "r"(b))
+
+static inline int vdev_ok(struct prukit_rpmsg *rp)
+{
+	GOTO_IF_VDEV_GONE(rp, gone);
+	return 1;
+gone:
+	return 0;
+}
+
+/*
+ * ... and is it still the session we set the rings up for?  Checked when a
+ * call starts: a reset and a new session may both have happened while the
+ * firmware was busy elsewhere, and then DRIVER_OK alone would not tell.
+ */
+static inline int session_ok(struct prukit_rpmsg *rp)
+{
+	if (!(RP_VDEV(rp)->gfeatures & PRUKIT_RPMSG_GF_SESSION))
+		return 0;
+	return vdev_ok(rp);
 }
 
 /* avail->flags (bits 15:0) and avail->idx (bits 31:16) in one load */
@@ -135,23 +204,32 @@ static int vq_pending(struct prukit_rpmsg *rp, struct prukit_vring *vq)
 	return n;
 }
 
+/* vq_take() besides a descriptor index 0..num - 1 (one compare for both) */
+#define VQ_BAD_HEAD	PRUKIT_VRING_NUM
+#define VQ_LOST		(PRUKIT_VRING_NUM + 1)
+
 /*
  * Take the next available entry and read its descriptor into *d.  Returns
- * the descriptor index, or -1 if the entry held an index >= num (counted;
- * the entry is used up, the descriptor table is not read).
+ * the descriptor index; VQ_BAD_HEAD if the entry held an index >= num
+ * (counted; the entry is used up, the descriptor table is not read); VQ_LOST
+ * if DRIVER_OK is gone (nothing read, nothing taken).
  */
-static int vq_take(struct prukit_rpmsg *rp, struct prukit_vring *vq,
-		   struct prukit_vring_desc *d)
+static unsigned int vq_take(struct prukit_rpmsg *rp, struct prukit_vring *vq,
+			    struct prukit_vring_desc *d)
 {
-	uint16_t head = ocp_read16(vq->base + PRUKIT_VRING_AVAIL_RING(vq->last_avail & VRING_MASK));
+	uint16_t head;
 
+	GOTO_IF_VDEV_GONE(rp, gone);
+	head = ocp_read16(vq->base + PRUKIT_VRING_AVAIL_RING(vq->last_avail & VRING_MASK));
 	vq->last_avail++;
 	if (head >= PRUKIT_VRING_NUM) {
 		note(rp, &rp->stats.err_desc_idx, PRUKIT_RPMSG_ST_DESC_IDX);
-		return -1;
+		return VQ_BAD_HEAD;
 	}
 	prukit_ocp_read(d, vq->base + PRUKIT_VRING_DESC_OFF + 16 * head, sizeof(*d));
 	return head;
+gone:
+	return VQ_LOST;
 }
 
 /*
@@ -170,22 +248,47 @@ static int buf_ok(const struct prukit_vring_desc *d, uint32_t need)
  * ARM unless avail->flags says not to.  The flags are read after used->idx
  * is written (a kick cannot be lost when Linux re-enables interrupts at the
  * same time), and since the read travels behind the posted writes to the
- * same memory, the ARM cannot see the kick before the used entry.
+ * same memory, the ARM cannot see the kick before the used entry.  Returns
+ * 0, or 1 if DRIVER_OK is gone (nothing written).
  */
-static void vq_put(struct prukit_rpmsg *rp, struct prukit_vring *vq, uint32_t head,
-		   uint32_t len)
+static int vq_put(struct prukit_rpmsg *rp, struct prukit_vring *vq, uint32_t head,
+		  uint32_t len)
 {
-	uint32_t elem = vq->base + PRUKIT_VRING_USED_RING(vq->used_idx & VRING_MASK);
+	uint32_t base = vq->base;
+	uint32_t elem = base + PRUKIT_VRING_USED_RING(vq->used_idx & VRING_MASK);
 
+	IN_REGS(base, elem);
+	GOTO_IF_VDEV_GONE(rp, gone);
 	ocp_write32(elem, head);
 	ocp_write32(elem + 4, len);
 	vq->used_idx++;
-	ocp_write16(vq->base + PRUKIT_VRING_USED_IDX, vq->used_idx);
+	ocp_write16(base + PRUKIT_VRING_USED_IDX, vq->used_idx);
 	vq_read_avail(vq);
 	if (!(vq->avail_flags & PRUKIT_VRING_AVAIL_F_NO_INTERRUPT)) {
 		r31_strobe_event(PRUKIT_RPMSG_EVT_TO_ARM);
 		rp->stats.kicks_out++;
 	}
+	return 0;
+gone:
+	return 1;
+}
+
+/* Start-up and recovery are rare: cold (GCC optimises them for size). */
+static __attribute__((cold)) int rpmsg_start(struct prukit_rpmsg *rp);
+
+/*
+ * The session is gone: count it, and unless we are starting already, start
+ * again (wait for DRIVER_OK, set the rings up, re-announce).  Nothing of the
+ * old session is touched any more.  Returns -ECONNRESET for the caller.
+ */
+static __attribute__((noinline, cold)) int rpmsg_lost(struct prukit_rpmsg *rp)
+{
+	rp->stats.resets++;
+	rp->stats.status = (rp->stats.status | PRUKIT_RPMSG_ST_RESET) &
+			   ~(PRUKIT_RPMSG_ST_READY | PRUKIT_RPMSG_ST_ANNOUNCED);
+	if (!rp->starting)
+		rpmsg_start(rp);
+	return -ECONNRESET;
 }
 
 int prukit_rpmsg_kicked(struct prukit_rpmsg *rp)
@@ -197,10 +300,13 @@ int prukit_rpmsg_kicked(struct prukit_rpmsg *rp)
 	return 1;
 }
 
-void prukit_rpmsg_wait(struct prukit_rpmsg *rp)
+int prukit_rpmsg_wait(struct prukit_rpmsg *rp)
 {
-	while (!prukit_rpmsg_kicked(rp))
-		;
+	while (!prukit_rpmsg_kicked(rp)) {
+		if (!session_ok(rp))
+			return rpmsg_lost(rp);
+	}
+	return 0;
 }
 
 int prukit_rpmsg_recv(struct prukit_rpmsg *rp, void *data, uint16_t *len, uint32_t *src)
@@ -208,14 +314,20 @@ int prukit_rpmsg_recv(struct prukit_rpmsg *rp, void *data, uint16_t *len, uint32
 	struct prukit_vring *vq = &rp->vq[PRUKIT_RPMSG_VQ_RX];
 	struct prukit_vring_desc d;
 	struct prukit_rpmsg_hdr hdr;
-	int head, ret;
+	unsigned int head;
+	int ret;
 
+	if (!session_ok(rp))
+		goto lost;
 	ret = vq_pending(rp, vq);
 	if (ret <= 0)
 		return ret ? ret : -EAGAIN;
 	head = vq_take(rp, vq, &d);
-	if (head < 0)
+	if (head >= PRUKIT_VRING_NUM) {
+		if (head == VQ_LOST)
+			goto lost;
 		return -EBADMSG;
+	}
 
 	ret = -EBADMSG;
 	if (!buf_ok(&d, sizeof(hdr))) {
@@ -228,15 +340,21 @@ int prukit_rpmsg_recv(struct prukit_rpmsg *rp, void *data, uint16_t *len, uint32
 			prukit_ocp_read(data, d.addr_lo + sizeof(hdr), hdr.len);
 			*len = hdr.len;
 			*src = hdr.src;
+			rp->dst = hdr.dst;
 			if (rp->peer == PRUKIT_RPMSG_ADDR_ANY)
 				rp->peer = hdr.src;
-			rp->stats.rx_msgs++;
 			ret = 0;
 		}
 	}
 	/* Linux's transmit buffers are read-only to us: 0 bytes written */
-	vq_put(rp, vq, head, 0);
+	if (vq_put(rp, vq, head, 0))
+		goto lost;
+	if (!ret)
+		rp->stats.rx_msgs++;
 	return ret;
+lost:
+	/* nothing received: the message went with the session */
+	return rpmsg_lost(rp);
 }
 
 __attribute__((noinline))
@@ -245,11 +363,14 @@ int prukit_rpmsg_send(struct prukit_rpmsg *rp, uint32_t dst, const void *data, u
 	struct prukit_vring *vq = &rp->vq[PRUKIT_RPMSG_VQ_TX];
 	uint32_t need = sizeof(struct prukit_rpmsg_hdr) + len;
 	struct prukit_vring_desc d;
-	unsigned int tries;
-	int head, ret;
+	unsigned int tries, head;
+	uint32_t buf, port;
+	int ret;
 
 	if (len > RPMSG_PRU_MAX_PAYLOAD)
 		return -EMSGSIZE;
+	if (!session_ok(rp))
+		goto lost;
 
 	/* At most num entries: each one taken is either used or skipped. */
 	for (tries = 0; tries < PRUKIT_VRING_NUM; tries++) {
@@ -257,8 +378,11 @@ int prukit_rpmsg_send(struct prukit_rpmsg *rp, uint32_t dst, const void *data, u
 		if (ret <= 0)
 			return ret ? ret : -EAGAIN;
 		head = vq_take(rp, vq, &d);
-		if (head < 0)
+		if (head >= PRUKIT_VRING_NUM) {
+			if (head == VQ_LOST)
+				goto lost;
 			continue;
+		}
 		if (!buf_ok(&d, need)) {
 			/*
 			 * Not given back: Linux would read a stale header
@@ -267,62 +391,125 @@ int prukit_rpmsg_send(struct prukit_rpmsg *rp, uint32_t dst, const void *data, u
 			note(rp, &rp->stats.err_desc, PRUKIT_RPMSG_ST_DESC);
 			continue;
 		}
-		ocp_write32(d.addr_lo + offsetof(struct prukit_rpmsg_hdr, src), rp->port);
-		ocp_write32(d.addr_lo + offsetof(struct prukit_rpmsg_hdr, dst), dst);
-		ocp_write32(d.addr_lo + offsetof(struct prukit_rpmsg_hdr, reserved), 0);
+		/* in a register: d's copy may change with every store below */
+		buf = d.addr_lo;
+		port = rp->port;
+		IN_REGS(buf, port);
+		GOTO_IF_VDEV_GONE(rp, lost);
+		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, src), port);
+		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, dst), dst);
+		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, reserved), 0);
 		/* len (bits 15:0) and flags (bits 31:16, 0) */
-		ocp_write32(d.addr_lo + offsetof(struct prukit_rpmsg_hdr, len), len);
-		prukit_ocp_write(d.addr_lo + sizeof(struct prukit_rpmsg_hdr), data, len);
-		vq_put(rp, vq, head, need);
+		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, len), len);
+		/* data escapes here: stores to it must be done before the call */
+		__asm__ __volatile__("" : : "r"(data) : "memory");
+		/* the payload, each burst stored right after a look at the status */
+		if (prukit_ocp_copy_live(buf + sizeof(struct prukit_rpmsg_hdr),
+					 (uint32_t)(uintptr_t)data, len, &RP_VDEV(rp)->status))
+			goto lost;
+		if (vq_put(rp, vq, head, need))
+			goto lost;
 		rp->stats.tx_msgs++;
 		return 0;
 	}
 	return -EAGAIN;
+lost:
+	/* not sent: the buffer (if one was taken) went with the session */
+	return rpmsg_lost(rp);
 }
 
-/* The loaded resource table: Linux writes da, notifyid and status. */
-static int vring_setup(struct prukit_rpmsg *rp, unsigned int i)
+/*
+ * The vrings as Linux wrote them into the loaded resource table (da,
+ * notifyid): 1 if both are usable.  Our indices start from 0.
+ */
+static __attribute__((cold)) int vrings_setup(struct prukit_rpmsg *rp)
 {
-	volatile struct prukit_rsc_vdev_vring *vr = &prukit_resource_table.vdev.vring[i];
-	struct prukit_vring *vq = &rp->vq[i];
-	uint32_t da = vr->da;
+	volatile struct prukit_rsc_vdev *vdev = RP_VDEV(rp);
+	int ok = vdev->num_of_vrings == 2;
+	unsigned int i;
 
-	vq->base = da;
-	vq->last_avail = 0;
-	vq->avail_idx = 0;
-	vq->used_idx = 0;
-	vq->avail_flags = 0;
-	return vr->num == PRUKIT_VRING_NUM && vr->align == PRUKIT_VRING_ALIGN &&
-	       da >= PRUKIT_RPMSG_OCP_MIN && da <= 0u - PRUKIT_VRING_SIZE;
+	for (i = 0; i < 2; i++) {
+		volatile struct prukit_rsc_vdev_vring *vr = &vdev->vring[i];
+		struct prukit_vring *vq = &rp->vq[i];
+		uint32_t da = vr->da;
+
+		vq->base = da;
+		vq->last_avail = 0;
+		vq->avail_idx = 0;
+		vq->used_idx = 0;
+		vq->avail_flags = 0;
+		ok &= vr->num == PRUKIT_VRING_NUM && vr->align == PRUKIT_VRING_ALIGN &&
+		      da >= PRUKIT_RPMSG_OCP_MIN && da <= 0u - PRUKIT_VRING_SIZE;
+	}
+	return ok;
 }
 
-int prukit_rpmsg_init(struct prukit_rpmsg *rp)
+/*
+ * Wait until Linux has set DRIVER_OK (reading only our data RAM), mark the
+ * session as ours, check the vrings and send rp->ns, waiting for a kick
+ * whenever there is no buffer (or the ring index is out of range) - and if
+ * the session ends meanwhile, all of it again.  Returns 0, or -EINVAL if the
+ * vrings are unusable: then the session is left unmarked, so that every
+ * later call comes back here (touching nothing in ARM memory) until Linux
+ * sets the vdev up anew.
+ */
+static __attribute__((cold)) int rpmsg_start(struct prukit_rpmsg *rp)
 {
-	volatile struct prukit_rsc_vdev *vdev = &prukit_resource_table.vdev;
-	int ret, ok;
+	volatile struct prukit_rsc_vdev *vdev = RP_VDEV(rp);
+	int ret;
 
+	rp->starting = 1;
+	do {
+		while (!vdev_ok(rp))
+			;
+		/* ours: a session Linux starts after this clears the bit */
+		vdev->gfeatures |= PRUKIT_RPMSG_GF_SESSION;
+		rp->peer = PRUKIT_RPMSG_ADDR_ANY;
+		if (!vrings_setup(rp)) {
+			vdev->gfeatures &= ~PRUKIT_RPMSG_GF_SESSION;
+			rp->stats.status |= PRUKIT_RPMSG_ST_BAD_RSC;
+			ret = -EINVAL;
+			break;
+		}
+		rp->stats.status |= PRUKIT_RPMSG_ST_READY;
+		ret = 0;
+		if (rp->ns) {
+			rp->port = rp->ns->addr;
+			do {
+				ret = prukit_rpmsg_send(rp, PRUKIT_RPMSG_NS_ADDR, rp->ns,
+							sizeof(*rp->ns));
+			} while ((ret == -EAGAIN || ret == -EIO) && !(ret = prukit_rpmsg_wait(rp)));
+			if (!ret)
+				rp->stats.status |= PRUKIT_RPMSG_ST_ANNOUNCED;
+		}
+	} while (ret == -ECONNRESET);
+	rp->starting = 0;
+	return ret;
+}
+
+/*
+ * Use the vdev at vdev (whose vrings follow it, as in every resource table),
+ * wait for Linux and announce ns (if not NULL): the start-up of
+ * prukit_rpmsg_init() and of pru_rpmsg_init().
+ */
+static __attribute__((cold)) int rpmsg_attach(struct prukit_rpmsg *rp, volatile struct prukit_rsc_vdev *vdev,
+			const struct prukit_rpmsg_ns_msg *ns)
+{
 	rp->stats = (struct prukit_rpmsg_stats){ 0 };
-	rp->port = PRUKIT_RPMSG_PORT;
+	rp->port = ns ? ns->addr : PRUKIT_RPMSG_PORT;
 	rp->peer = PRUKIT_RPMSG_ADDR_ANY;
+	rp->vdev = vdev;
+	rp->ns = ns;
+	rp->starting = 0;
 
 	pruss_ocp_master_enable();
-	while (!(vdev->status & PRUKIT_VIRTIO_S_DRIVER_OK))
-		;
-
-	ok = vdev->num_of_vrings == 2;
-	ok &= vring_setup(rp, PRUKIT_RPMSG_VQ_TX);
-	ok &= vring_setup(rp, PRUKIT_RPMSG_VQ_RX);
-	if (!ok) {
-		rp->stats.status |= PRUKIT_RPMSG_ST_BAD_RSC;
-		return -EINVAL;
-	}
-	rp->stats.status |= PRUKIT_RPMSG_ST_READY;
-
-	while ((ret = prukit_rpmsg_send(rp, PRUKIT_RPMSG_NS_ADDR, &prukit_rpmsg_ns,
-					sizeof(prukit_rpmsg_ns))) == -EAGAIN)
-		prukit_rpmsg_wait(rp);
-	if (ret)
-		return ret;
-	rp->stats.status |= PRUKIT_RPMSG_ST_ANNOUNCED;
-	return 0;
+	return rpmsg_start(rp);
 }
+
+#ifndef PRUKIT_RPMSG_EXTERNAL_TABLE
+__attribute__((cold))
+int prukit_rpmsg_init(struct prukit_rpmsg *rp)
+{
+	return rpmsg_attach(rp, RP_VDEV(rp), &prukit_rpmsg_ns);
+}
+#endif
