@@ -127,6 +127,6 @@ static inline int16_t prukit_pru_rpmsg_channel4(enum pru_rpmsg_ns_flags flags,
 #define PRUKIT_PRU_RPMSG_PICK(a, b, c, d, e, f, ...)	f
 #define pru_rpmsg_channel(...)						\
 	PRUKIT_PRU_RPMSG_PICK(__VA_ARGS__, pru_rpmsg_channel,		\
-			      prukit_pru_rpmsg_channel4, )(__VA_ARGS__)
+			      prukit_pru_rpmsg_channel4, 0)(__VA_ARGS__)
 
 #endif /* PRUKIT_COMPAT_PRU_RPMSG_H */

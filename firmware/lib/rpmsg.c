@@ -135,31 +135,29 @@ static void note(struct prukit_rpmsg *rp, uint32_t *counter, uint32_t status)
 static_assert(PRUKIT_VIRTIO_S_DRIVER_OK == 1u << DRIVER_OK_BIT, "DRIVER_OK is bit 2");
 
 /*
- * Go to label if DRIVER_OK is gone: one load of the word that starts with
- * the status byte (then num_of_vrings and two reserved bytes; little endian)
- * and one QBBC - GCC 12 would test the bit with AND and QBEQ.
+ * One load of the word that starts with the status byte (then num_of_vrings
+ * and two reserved bytes; little endian) and one QBBC, which the caller's
+ * "if (!vdev_ok(rp)) goto ..." becomes once inlined - GCC 12 would test the
+ * bit with AND and QBEQ.
  */
-#define GOTO_IF_VDEV_GONE(rp, label)					\
-	do {								\
-		uint32_t st_ = *(volatile uint32_t *)&RP_VDEV(rp)->status; \
-									\
-		__asm__ goto("qbbc %l[" #label "], %0, %1"		\
-			     : : "r"(st_), "i"(DRIVER_OK_BIT) : : label); \
-	} while (0)
+static inline __attribute__((always_inline)) int vdev_ok(struct prukit_rpmsg *rp)
+{
+	uint32_t st = *(volatile uint32_t *)&RP_VDEV(rp)->status;
+
+	__asm__ goto("qbbc %l[gone], %0, %1" : : "r"(st), "i"(DRIVER_OK_BIT) : : gone);
+	return 1;
+gone:
+	return 0;
+}
 
 /*
  * Have these values in registers before the next check: GCC would otherwise
  * compute addresses (and load from data RAM) between the check and the
  * stores it guards, widening the window.
  */
-#define IN_REGS(a, b)	__asm__ __volatile__("" : : "r"(a), "r"(b))
-
-static inline int vdev_ok(struct prukit_rpmsg *rp)
+static inline void in_regs(uint32_t a, uint32_t b)
 {
-	GOTO_IF_VDEV_GONE(rp, gone);
-	return 1;
-gone:
-	return 0;
+	__asm__ __volatile__("" : : "r"(a), "r"(b));
 }
 
 /*
@@ -219,7 +217,8 @@ static unsigned int vq_take(struct prukit_rpmsg *rp, struct prukit_vring *vq,
 {
 	uint16_t head;
 
-	GOTO_IF_VDEV_GONE(rp, gone);
+	if (!vdev_ok(rp))
+		goto gone;
 	head = ocp_read16(vq->base + PRUKIT_VRING_AVAIL_RING(vq->last_avail & VRING_MASK));
 	vq->last_avail++;
 	if (head >= PRUKIT_VRING_NUM) {
@@ -257,8 +256,9 @@ static int vq_put(struct prukit_rpmsg *rp, struct prukit_vring *vq, uint32_t hea
 	uint32_t base = vq->base;
 	uint32_t elem = base + PRUKIT_VRING_USED_RING(vq->used_idx & VRING_MASK);
 
-	IN_REGS(base, elem);
-	GOTO_IF_VDEV_GONE(rp, gone);
+	in_regs(base, elem);
+	if (!vdev_ok(rp))
+		goto gone;
 	ocp_write32(elem, head);
 	ocp_write32(elem + 4, len);
 	vq->used_idx++;
@@ -394,8 +394,9 @@ int prukit_rpmsg_send(struct prukit_rpmsg *rp, uint32_t dst, const void *data, u
 		/* in a register: d's copy may change with every store below */
 		buf = d.addr_lo;
 		port = rp->port;
-		IN_REGS(buf, port);
-		GOTO_IF_VDEV_GONE(rp, lost);
+		in_regs(buf, port);
+		if (!vdev_ok(rp))
+			goto lost;
 		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, src), port);
 		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, dst), dst);
 		ocp_write32(buf + offsetof(struct prukit_rpmsg_hdr, reserved), 0);
@@ -478,7 +479,9 @@ static __attribute__((cold)) int rpmsg_start(struct prukit_rpmsg *rp)
 			do {
 				ret = prukit_rpmsg_send(rp, PRUKIT_RPMSG_NS_ADDR, rp->ns,
 							sizeof(*rp->ns));
-			} while ((ret == -EAGAIN || ret == -EIO) && !(ret = prukit_rpmsg_wait(rp)));
+				/* no buffer yet: wait for a kick (or -ECONNRESET) */
+			} while ((ret == -EAGAIN || ret == -EIO) &&
+				 !(ret = prukit_rpmsg_wait(rp)));
 			if (!ret)
 				rp->stats.status |= PRUKIT_RPMSG_ST_ANNOUNCED;
 		}
@@ -492,15 +495,15 @@ static __attribute__((cold)) int rpmsg_start(struct prukit_rpmsg *rp)
  * wait for Linux and announce ns (if not NULL): the start-up of
  * prukit_rpmsg_init() and of pru_rpmsg_init().
  */
-static __attribute__((cold)) int rpmsg_attach(struct prukit_rpmsg *rp, volatile struct prukit_rsc_vdev *vdev,
-			const struct prukit_rpmsg_ns_msg *ns)
+static __attribute__((cold)) int rpmsg_attach(struct prukit_rpmsg *rp,
+					      volatile struct prukit_rsc_vdev *vdev,
+					      const struct prukit_rpmsg_ns_msg *ns)
 {
+	/* peer and starting: rpmsg_start() sets them, port too if ns */
 	rp->stats = (struct prukit_rpmsg_stats){ 0 };
-	rp->port = ns ? ns->addr : PRUKIT_RPMSG_PORT;
-	rp->peer = PRUKIT_RPMSG_ADDR_ANY;
+	rp->port = PRUKIT_RPMSG_PORT;
 	rp->vdev = vdev;
 	rp->ns = ns;
-	rp->starting = 0;
 
 	pruss_ocp_master_enable();
 	return rpmsg_start(rp);

@@ -253,22 +253,24 @@ struct prukit_rpmsg {
 /*
  * The resource table is rpmsg.c's prukit_resource_table (a struct
  * prukit_rpmsg_rsc_table in .resource_table); it is not declared here, so
- * that firmware using only prukit_ocp_copy() from this header can have
+ * that firmware which includes this header but not the library can have
  * PRUKIT_RESOURCE_TABLE_EMPTY().
  */
 
 /*
- * Enable the OCP master port, wait until Linux has set DRIVER_OK, check the
- * vrings and announce "rpmsg-pru" at this core's port (waiting for a kick
- * while Linux has no buffer, or its ring index is out of range).  Returns
- * 0, or -EINVAL (and
+ * Enable the OCP master port, wait until Linux has set DRIVER_OK, mark the
+ * session (PRUKIT_RPMSG_GF_SESSION), check the vrings and announce
+ * "rpmsg-pru" at this core's port (waiting for a kick while Linux has no
+ * buffer, or its ring index is out of range).  Returns 0, or -EINVAL (and
  * PRUKIT_RPMSG_ST_BAD_RSC) if the table holds unusable vrings: then nothing
  * else must be called.
  *
- * After a reset (DRIVER_OK gone, see above) recv, send and wait do the same
- * again themselves - wait for DRIVER_OK, set the rings up, announce - and
- * only then return; a table that has become unusable is waited out (until
- * Linux resets the vdev again) rather than returned.
+ * After a reset (DRIVER_OK gone, or a session not marked, see above) recv,
+ * send and wait do the same again themselves - wait for DRIVER_OK, set the
+ * rings up, announce - and only then return -ECONNRESET.  If the vrings have
+ * become unusable, every such call finds that out again and returns
+ * -ECONNRESET, touching nothing in ARM memory, until Linux sets the vdev up
+ * anew.
  */
 int prukit_rpmsg_init(struct prukit_rpmsg *rp);
 
