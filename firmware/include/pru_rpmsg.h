@@ -82,7 +82,9 @@ struct pru_rpmsg_transport {
  * the program's resource table, where they follow the vdev entry).  Waits
  * for DRIVER_OK.  PRU_RPMSG_SUCCESS, PRU_RPMSG_INVALID_EVENT, or
  * PRU_RPMSG_INVALID_VRING; after either error every other call returns
- * PRU_RPMSG_INVALID_VRING without touching ARM memory.
+ * PRU_RPMSG_INVALID_VRING without touching ARM memory.  (Vrings that turn
+ * unusable after a later reset give PRU_RPMSG_LINK_RESET instead, on every
+ * call, until Linux sets the vdev up anew.)
  */
 int16_t pru_rpmsg_init(struct pru_rpmsg_transport *transport,
 		       struct fw_rsc_vdev_vring *vring0,

@@ -54,12 +54,13 @@ static int16_t pru_rpmsg_ret(int ret)
 }
 
 /*
- * Did pru_rpmsg_init() find usable vrings?  If not, nothing may be touched.
- * (After a reset the library sets READY again before it returns.)
+ * Did pru_rpmsg_init() succeed?  If not (rpmsg.vdev left NULL), nothing may
+ * be touched.  Vrings that turn unusable after a reset are the library's
+ * business: it finds that out again on every call, touching nothing.
  */
 static int transport_ready(struct pru_rpmsg_transport *transport)
 {
-	return transport->rpmsg.vdev && (transport->rpmsg.stats.status & PRUKIT_RPMSG_ST_READY);
+	return transport->rpmsg.vdev != NULL;
 }
 
 int16_t pru_rpmsg_init(struct pru_rpmsg_transport *transport,
@@ -70,6 +71,7 @@ int16_t pru_rpmsg_init(struct pru_rpmsg_transport *transport,
 	/* In every resource table the vrings follow their vdev entry. */
 	struct prukit_rsc_vdev *vdev = (struct prukit_rsc_vdev *)
 		((char *)vring0 - offsetof(struct prukit_rsc_vdev, vring));
+	int ret;
 
 	memset(transport, 0, sizeof(*transport));
 	transport->virtqueue0.id = vring0->notifyid;
@@ -92,7 +94,10 @@ int16_t pru_rpmsg_init(struct pru_rpmsg_transport *transport,
 		return PRU_RPMSG_INVALID_VRING;
 	}
 	/* no announcement yet: that is pru_rpmsg_channel()'s */
-	return pru_rpmsg_ret(rpmsg_attach(&transport->rpmsg, vdev, NULL));
+	ret = rpmsg_attach(&transport->rpmsg, vdev, NULL);
+	if (ret)
+		transport->rpmsg.vdev = NULL;
+	return pru_rpmsg_ret(ret);
 }
 
 int16_t pru_rpmsg_receive(struct pru_rpmsg_transport *transport, uint16_t *src,
