@@ -3,8 +3,8 @@
 #
 # make demo: on a fresh machine, build what is needed, boot the emulated
 # BeagleBone (Debian's 6.1 kernel, pru_sim's PRU-ICSS) and run the PRU
-# Cookbook's NeoPixel example and prukit's rainbow client through
-# /dev/rpmsg_pru30.  The 24 LEDs' colours are decoded from the simulated
+# Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and prukit's rainbow
+# client through /dev/rpmsg_pru30.  The 24 LEDs' colours are decoded from the simulated
 # P9_29 by sigrok's rgb_led_ws281x decoder and shown as coloured blocks in the
 # terminal, a PNG strip per frame, one PNG of all frames and a GIF in out/demo.
 set -euo pipefail

@@ -108,7 +108,7 @@ make_initrd() {
 	done
 	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
 	# Clients a user runs on the board, as shipped
-	install -D -m 0755 "$PRUKIT_TOP/firmware/neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
+	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{
 		echo "PRUKIT_MODE=$mode"
 		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"

@@ -14,8 +14,9 @@ written as PNG pictures.
 --png-dir writes DIR/frame-NNN.png, one strip of LEDs per frame; --strip
 one PNG with a row per frame; --gif an animation.  Pictures need Debian's
 python3-pil (run with /usr/bin/python3).  --expect compares the frames with
-FILE, a line of "#rrggbb" words per frame (what firmware/neopixel/rainbow.py
---print writes), and exits 1 unless every frame matches.
+FILE, a line of "#rrggbb" words per frame (what
+firmware/rpmsg-neopixel/rainbow.py --print writes), and exits 1 unless every
+frame matches.
 """
 import argparse
 import os

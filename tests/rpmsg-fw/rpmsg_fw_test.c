@@ -4,7 +4,7 @@
  * running in the prusim core, on the host, without a kernel.
  *
  *   rpmsg_fw_test echo RPMSG_ECHO_PRU0.elf RPMSG_ECHO_PRU1.elf
- *   rpmsg_fw_test neopixel NEOPIXEL_PRU0.elf [TRACE_FILE]
+ *   rpmsg_fw_test rpmsg-neopixel RPMSG_NEOPIXEL_PRU0.elf [TRACE_FILE]
  *
  * The harness does what remoteproc and virtio_rpmsg do: it reads the
  * resource table from the loaded image, writes the vring addresses into the
@@ -27,7 +27,7 @@
 #include "prusim.h"
 #include "prusim_trace.h"
 #include <prukit/rpmsg.h>
-#include "../../firmware/neopixel/neopixel.h"
+#include "../../firmware/rpmsg-neopixel/neopixel.h"
 
 #define DDR_BASE	0x9e000000u	/* a DMA address, as in the VM's window */
 #define DDR_SIZE	0x40000u
@@ -1352,7 +1352,7 @@ static void test_echo(const char *fw, unsigned int core)
 }
 
 /* ---------------------------------------------------------------------- */
-/* NeoPixel                                                                */
+/* rpmsg-neopixel                                                          */
 
 static u32 np_stat(struct harness *h, u32 sym, size_t off)
 {
@@ -1452,7 +1452,7 @@ static void write_trace(struct harness *h, const char *path)
 	}
 	if (f && fclose(f))
 		ok = false;
-	check(ok && n == h->edges, "neopixel-pru0: pin trace written", "%u edges to %s", n,
+	check(ok && n == h->edges, "rpmsg-neopixel-pru0: pin trace written", "%u edges to %s", n,
 	      path);
 }
 
@@ -1474,7 +1474,7 @@ static void np_frame_case(struct harness *h, u32 stats, const char *what, const 
 			 (unsigned long long)(rise - *last_fall));
 		ok = false;
 	}
-	snprintf(name, sizeof(name), "neopixel-pru0: %s", what);
+	snprintf(name, sizeof(name), "rpmsg-neopixel-pru0: %s", what);
 	if (!ok)
 		check(false, name, "%s", why);
 	else
@@ -1488,7 +1488,7 @@ static void np_frame_case(struct harness *h, u32 stats, const char *what, const 
 
 static void test_neopixel(const char *fw, const char *trace)
 {
-	struct harness *h = harness_new(fw, "neopixel", 0);
+	struct harness *h = harness_new(fw, "rpmsg-neopixel", 0);
 	u32 stats = elf_sym(h->img, h->img_size, "neopixel_stats");
 	u8 grb[NEOPIXEL_COUNT * 3] = { 0 };
 	char line[200], name[96];
@@ -1496,7 +1496,7 @@ static void test_neopixel(const char *fw, const char *trace)
 	u64 last_fall = 0;
 
 	if (stats == NO_ADDR) {
-		check(false, "neopixel-pru0: symbols", "no neopixel_stats");
+		check(false, "rpmsg-neopixel-pru0: symbols", "no neopixel_stats");
 		harness_free(h);
 		return;
 	}
@@ -1505,7 +1505,7 @@ static void test_neopixel(const char *fw, const char *trace)
 		return;
 	}
 	check(!h->edges && !(h->s->core[0].r[30] & (1u << NEOPIXEL_BIT)),
-	      "neopixel-pru0: line low at start", "%u edges on P9_29 before the first frame",
+	      "rpmsg-neopixel-pru0: line low at start", "%u edges on P9_29 before the first frame",
 	      h->edges);
 
 	/* The brief's example: pixel 0 = red 0xff, green 0, blue 127 */
@@ -1514,7 +1514,7 @@ static void test_neopixel(const char *fw, const char *trace)
 	grb[2] = 0x7f;
 	last_fall = 0;
 	if (!np_send(h, "0 0xff 0 127\n"))
-		check(false, "neopixel-pru0: send", "no transmit buffer");
+		check(false, "rpmsg-neopixel-pru0: send", "no transmit buffer");
 	np_frame_case(h, stats, "\"0 0xff 0 127\" then \"-1\": LED0 GRB 00 ff 7f, 23 off",
 		      "-1\n", grb, &last_fall);
 	np_frame_case(h, stats, "a second \"-1\": same frame after the reset", "-1", grb,
@@ -1542,7 +1542,7 @@ static void test_neopixel(const char *fw, const char *trace)
 	grb[7 * 3 + 2] = 1;
 	np_frame_case(h, stats, "several lines and \"-1\" in one message",
 		      "7 0 0xff 1\n-1\n8 1 1 1", grb, &last_fall);
-	snprintf(name, sizeof(name), "neopixel-pru0: malformed lines ignored and counted");
+	snprintf(name, sizeof(name), "rpmsg-neopixel-pru0: malformed lines ignored and counted");
 	check(np_stat(h, stats, offsetof(struct neopixel_stats, lines_bad)) - bad0 == 16 &&
 	      np_stat(h, stats, offsetof(struct neopixel_stats, lines_ok)) - ok0 == 4 &&
 	      core_running(h), name, "%u bad (want 16), %u good (want 4: pixels 5, 6, 7, 8)",
@@ -1558,7 +1558,7 @@ static void test_neopixel(const char *fw, const char *trace)
 	check(core_running(h) && !h->poison_hits && !STAT(h, stats.err_desc) &&
 	      !STAT(h, stats.err_msg_len) && !STAT(h, stats.err_desc_idx) &&
 	      !STAT(h, stats.err_ring_idx),
-	      "neopixel-pru0: rpmsg clean", "running, no ring errors, %u messages",
+	      "rpmsg-neopixel-pru0: rpmsg clean", "running, no ring errors, %u messages",
 	      np_stat(h, stats, offsetof(struct neopixel_stats, msgs)));
 	if (trace)
 		write_trace(h, trace);
@@ -1570,11 +1570,12 @@ int main(int argc, char **argv)
 	if (argc == 4 && !strcmp(argv[1], "echo")) {
 		test_echo(argv[2], 0);
 		test_echo(argv[3], 1);
-	} else if ((argc == 3 || argc == 4) && !strcmp(argv[1], "neopixel")) {
+	} else if ((argc == 3 || argc == 4) && !strcmp(argv[1], "rpmsg-neopixel")) {
 		test_neopixel(argv[2], argc == 4 ? argv[3] : NULL);
 	} else {
 		fprintf(stderr, "usage: %s echo ECHO_PRU0.elf ECHO_PRU1.elf\n"
-			"       %s neopixel NEOPIXEL_PRU0.elf [TRACE_FILE]\n", argv[0], argv[0]);
+			"       %s rpmsg-neopixel RPMSG_NEOPIXEL_PRU0.elf [TRACE_FILE]\n",
+			argv[0], argv[0]);
 		return 2;
 	}
 	return failures ? 1 : 0;

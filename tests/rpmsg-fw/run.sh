@@ -2,16 +2,16 @@
 # SPDX-License-Identifier: GPL-2.0-only
 #
 # tests/rpmsg-fw/run.sh - prukit's rpmsg firmware (firmware/lib/rpmsg.c,
-# firmware/rpmsg-echo, firmware/neopixel) against a host-side stand-in for
-# Linux's remoteproc/virtio_rpmsg, in the prusim core, without a kernel.
+# firmware/rpmsg-echo, firmware/rpmsg-neopixel) against a host-side stand-in
+# for Linux's remoteproc/virtio_rpmsg, in the prusim core, without a kernel.
 #
 #   1. build the firmware, the prusim tool and the harness (ASan + UBSan)
 #   2. the library's share of IRAM/DRAM, from the link maps
 #   3. rpmsg_fw_test echo: resource table, irq map, DRIVER_OK wait, name
 #      service, echo of 1..496 bytes, a burst larger than the rings, kick
 #      suppression, cycles per message, malformed rings, bad resource tables
-#   4. rpmsg_fw_test neopixel: the WS2812 wire timing of every bit, reset,
-#      malformed lines; its pin trace goes through "prusim --trace-in
+#   4. rpmsg_fw_test rpmsg-neopixel: the WS2812 wire timing of every bit,
+#      reset, malformed lines; its pin trace goes through "prusim --trace-in
 #      --events --vcd" and ws2812_decode.py decodes the tool's event list
 #
 # Prints PASS:/FAIL: lines and exits non-zero if anything failed.
@@ -60,7 +60,7 @@ else
 fi
 
 # 2. Sizes: input sections of lib/rpmsg.c.o and lib/ocp_copy.S.o in each link map
-for img in rpmsg-echo-pru0 rpmsg-echo-pru1 neopixel-pru0; do
+for img in rpmsg-echo-pru0 rpmsg-echo-pru1 rpmsg-neopixel-pru0; do
 	map=$fw/obj/${img%-pru?}/${img##*-}/$img.map
 	line=$(READELF="$bin/pru-readelf" NM="$bin/pru-nm" "$PRUKIT_TOP/firmware/fwinfo.sh" \
 		"$fw/$img.elf" "$img.elf" 2>&1 || true)
@@ -114,15 +114,16 @@ done
 "$out/rpmsg_fw_test" echo "$fw/rpmsg-echo-pru0.elf" "$fw/rpmsg-echo-pru1.elf" || failed=1
 
 # 4. NeoPixel, then the tool's view of the same pin trace
-rm -f "$out/neopixel.trace" "$out/neopixel.events" "$out/neopixel.vcd"
-"$out/rpmsg_fw_test" neopixel "$fw/neopixel-pru0.elf" "$out/neopixel.trace" || failed=1
-if [ -f "$out/neopixel.trace" ] &&
-   "$prusim" --trace-in "$out/neopixel.trace" --events "$out/neopixel.events" \
-	--vcd "$out/neopixel.vcd" >"$out/trace-in.log" 2>&1; then
-	pass "prusim --trace-in: neopixel.events, neopixel.vcd ($(wc -l <"$out/neopixel.events") edges)"
+np=$out/rpmsg-neopixel
+rm -f "$np.trace" "$np.events" "$np.vcd"
+"$out/rpmsg_fw_test" rpmsg-neopixel "$fw/rpmsg-neopixel-pru0.elf" "$np.trace" || failed=1
+if [ -f "$np.trace" ] &&
+   "$prusim" --trace-in "$np.trace" --events "$np.events" \
+	--vcd "$np.vcd" >"$out/trace-in.log" 2>&1; then
+	pass "prusim --trace-in: rpmsg-neopixel.events, rpmsg-neopixel.vcd ($(wc -l <"$np.events") edges)"
 else
 	cat "$out/trace-in.log" 2>/dev/null || true
-	fail "prusim --trace-in of the neopixel pin trace"
+	fail "prusim --trace-in of the rpmsg-neopixel pin trace"
 fi
 # The frames the harness sent, GRB per pixel: pixel 0 = "0 0xff 0 127" twice,
 # then pixels 5, 6, 7 added, then pixel 8
@@ -138,11 +139,11 @@ print(f.hex())' "$@"
 f1=$(frame 0:00ff7f)
 f3=$(frame 0:00ff7f 5:020103 6:20103f 7:ff0001)
 f4=$(frame 0:00ff7f 5:020103 6:20103f 7:ff0001 8:010101)
-if [ -f "$out/neopixel.events" ]; then
-	python3 "$T/ws2812_decode.py" "$out/neopixel.events" P9_29 "$f1" "$f1" "$f3" "$f4" ||
+if [ -f "$np.events" ]; then
+	python3 "$T/ws2812_decode.py" "$np.events" P9_29 "$f1" "$f1" "$f3" "$f4" ||
 		failed=1
 	# and the decoder is not blind: a wrong expectation must fail
-	if python3 "$T/ws2812_decode.py" "$out/neopixel.events" P9_29 "$f1" "$f1" "$f4" "$f4" \
+	if python3 "$T/ws2812_decode.py" "$np.events" P9_29 "$f1" "$f1" "$f4" "$f4" \
 		>/dev/null; then
 		fail "ws2812_decode.py accepts a wrong frame"
 	else

@@ -16,7 +16,7 @@
  * reset.  Other lines are ignored and counted in neopixel_stats.lines_bad.
  *
  * Where the Cookbook times the bits with __delay_cycles() around "__R30 |="
- * and "__R30 &=", this program calls firmware/neopixel's ws2812_send(),
+ * and "__R30 &=", this program calls firmware/rpmsg-neopixel's ws2812_send(),
  * whose timing is exact to the cycle (prukit's pru-gcc port of the edits is
  * in Documentation/firmware-rpmsg.rst).
  */
@@ -30,7 +30,7 @@
 #include <rsc_types.h>
 #include "resource_table_0.h"
 
-#include "../../neopixel/neopixel.h"
+#include "../../rpmsg-neopixel/neopixel.h"
 
 /* Host-0 interrupt sets bit 30 in register R31 */
 #define HOST_INT		((uint32_t)1 << 30)

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause */
 /*
- * neopixel: void ws2812_send(const uint8_t *grb, uint32_t nbytes, uint32_t r30)
+ * rpmsg-neopixel:
+ * void ws2812_send(const uint8_t *grb, uint32_t nbytes, uint32_t r30)
  *
  * Bit-bangs nbytes bytes, MSB first, on R30 bit NEOPIXEL_BIT with the WS2812
  * timing of neopixel.h, exact to the cycle.  Every instruction here takes one

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-only
-"""A rainbow running along the NeoPixel firmware's 24 LEDs, through rpmsg.
+"""A rainbow running along the rpmsg NeoPixel firmware's 24 LEDs.
 
 Start the firmware on PRU0 (as root, or in group remoteproc):
 
-    echo prukit/neopixel-pru0.elf > /sys/class/remoteproc/remoteproc1/firmware
+    echo prukit/rpmsg-neopixel-pru0.elf > /sys/class/remoteproc/remoteproc1/firmware
     echo start > /sys/class/remoteproc/remoteproc1/state
     ./rainbow.py
 
@@ -22,7 +22,7 @@ import os
 import sys
 import time
 
-COUNT = 24		# LEDs on the string (firmware/neopixel/neopixel.h)
+COUNT = 24		# LEDs on the string (firmware/rpmsg-neopixel/neopixel.h)
 MAX_MSG = 496		# bytes in one rpmsg message
 
 
@@ -86,7 +86,7 @@ def main():
     except OSError as e:
         hint = ""
         if e.errno == errno.ENOENT:
-            hint = " (is prukit/neopixel-pru0.elf running on PRU0?)"
+            hint = " (is prukit/rpmsg-neopixel-pru0.elf running on PRU0?)"
         elif e.errno == errno.EACCES:
             hint = " (run as root or join group remoteproc)"
         sys.exit("%s: %s: %s%s" % (ap.prog, args.device, e.strerror, hint))

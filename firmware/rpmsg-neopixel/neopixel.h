@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause */
 /*
- * neopixel: constants shared by neopixel.c and ws2812.S, and by the test
- * that checks the wire timing cycle by cycle (tests/rpmsg-fw).
+ * rpmsg-neopixel: constants of the rpmsg NeoPixel firmware
+ * (firmware/rpmsg-neopixel), shared by neopixel.c and ws2812.S, by
+ * firmware/examples/cookbook-rpmsg-neopixel and by the test that checks the
+ * wire timing cycle by cycle (tests/rpmsg-fw).
  */
-#ifndef _NEOPIXEL_H
-#define _NEOPIXEL_H
+#ifndef _PRUKIT_RPMSG_NEOPIXEL_H
+#define _PRUKIT_RPMSG_NEOPIXEL_H
 
 #define NEOPIXEL_BIT		1	/* R30 bit 1: pr1_pru0_pru_r30_1, P9_29 */
 #define NEOPIXEL_COUNT		24	/* pixels in the string */
@@ -37,4 +39,4 @@ struct neopixel_stats {
 };
 #endif
 
-#endif /* _NEOPIXEL_H */
+#endif /* _PRUKIT_RPMSG_NEOPIXEL_H */

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause
 /*
- * neopixel: a string of 24 WS2812 ("NeoPixel") LEDs on PRU0 R30 bit 1
+ * rpmsg-neopixel: a string of 24 WS2812 ("NeoPixel") LEDs on PRU0 R30 bit 1
  * (P9_29, pad mcasp0_fsx, mux mode 5), driven over rpmsg as in the PRU
  * Cookbook:
  *
