@@ -87,8 +87,9 @@ vmtest:
 
 vmrun:
 	@test -n "$(KVER)" -a -n "$(SCRIPT)" || \
-		{ echo "usage: make vmrun KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]"; exit 2; }
-	$(SCRIPTS)/vm.sh run $(KVER) $(SCRIPT) "$(IN)" "$(or $(OUT),$(BUILD)/vmrun)"
+		{ echo "usage: make vmrun KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir] [OVERLAY='a.dtso b.dtso']"; exit 2; }
+	PRUKIT_VM_OVERLAYS="$(abspath $(OVERLAY))" \
+		$(SCRIPTS)/vm.sh run $(KVER) $(SCRIPT) "$(IN)" "$(or $(OUT),$(BUILD)/vmrun)"
 
 checkpatch:
 	$(SCRIPTS)/checkpatch.sh

@@ -142,4 +142,21 @@ void *rproc_da_to_va(PRUKIT_RPROC_DA_TO_VA_ARGS);
 #define PRUKIT_IMPORT_NS()		MODULE_IMPORT_NS(PRUKIT)
 #endif
 
+/*
+ * struct gpio_chip's .set callback returns void in 5.10 to 6.12 and int in
+ * the kernels after gpiolib's 2025 setter conversion (v6.16 added .set_rv
+ * for it; later releases made .set itself return int).  Pick the variant
+ * by the member's type, not by a version number: @set_void and @set_int
+ * are the two forms of the same function.
+ */
+#define prukit_gpio_chip_set(chip, set_void, set_int)				\
+	do {									\
+		struct gpio_chip *__gc = (chip);				\
+										\
+		__gc->set = __builtin_choose_expr(				\
+			__builtin_types_compatible_p(typeof(__gc->set),		\
+				void (*)(struct gpio_chip *, unsigned int, int)), \
+			(set_void), (set_int));					\
+	} while (0)
+
 #endif /* PRUKIT_COMPAT_H */

@@ -17,7 +17,9 @@
 #	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
 #	with /proc, /sys, /dev and debugfs mounted, prukit's modules loaded
 #	and the host directory IN unpacked at /in (also the working directory);
-#	copy the guest's /out to OUT; exit with the script's status.
+#	copy the guest's /out to OUT; exit with the script's status.  With
+#	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
+#	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
 #	For each kernel, boot once and run the tests in tests/vm/cases (all,
 #	or those named in TESTS), bring back their logs and artifacts to
@@ -52,13 +54,19 @@ build_prukit() {
 	"$PRUKIT_TOP/scripts/kernels.sh" --build-only "$series" >/dev/null ||
 		die "building prukit for $kver failed (see out/kernels/$kver/build.log)"
 	make -s -C "$PRUKIT_TOP" firmware >/dev/null
+	make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
 }
 
-# The device tree: the kernel's own vexpress-a15 tree plus prukit's overlays
-# (QEMU adds its virtio-mmio nodes when it boots).
+# The device tree: the kernel's own vexpress-a15 tree, the simulated
+# PRU-ICSS and board (tests/vm/overlays, which carry a BeagleBone tree's
+# labels), then every overlay that "make overlays_install" ships, exactly
+# those blobs, then the user's own overlays (make vmrun OVERLAY=...: space
+# separated .dtso paths in $PRUKIT_VM_OVERLAYS).  QEMU adds its virtio-mmio
+# nodes when it boots.
 make_dtb() {
 	local dir=$1 o name base
 	mkdir -p "$dir"
+	rm -f "$dir"/*.dtbo
 	base=$(find "$kimage/usr/lib/linux-image-$kver" -name vexpress-v2p-ca15-tc1.dtb | head -n 1)
 	[ -n "$base" ] || die "no vexpress-v2p-ca15-tc1.dtb in linux-image-$kver"
 	local overlays=()
@@ -68,8 +76,22 @@ make_dtb() {
 		dtc -q -@ -I dts -O dtb -o "$dir/$name.dtbo" "$o"
 		overlays+=("$dir/$name.dtbo")
 	done
-	fdtoverlay -i "$base" -o "$dir/merged.dtb" "${overlays[@]}"
+	for o in "$PRUKIT_TOP"/out/overlays/*.dtbo; do
+		[ -e "$o" ] || die "no shipped overlays in out/overlays (make overlays)"
+		overlays+=("$o")
+	done
+	for o in ${PRUKIT_VM_OVERLAYS:-}; do
+		name=user-$(basename "$o" .dtso)
+		"$PRUKIT_TOP/scripts/dtso-build.sh" "$o" "$dir/$name.dtbo" ||
+			die "cannot build overlay $o"
+		overlays+=("$dir/$name.dtbo")
+	done
+	if ! fdtoverlay -i "$base" -o "$dir/merged.dtb" "${overlays[@]}" 2>"$dir/fdtoverlay.log"; then
+		cat "$dir/fdtoverlay.log" >&2
+		die "applying the overlays failed (a label the simulated board lacks?): ${overlays[*]##*/}"
+	fi
 	dtc -q -I dtb -O dtb -o "$dir/prukit.dtb" "$dir/merged.dtb"
+	msg "device tree: ${overlays[*]##*/}"
 }
 
 # make_initrd DIR MODE SCRIPT_OR_TESTS - the userland plus an archive with

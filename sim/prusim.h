@@ -48,6 +48,13 @@
 #define PRUSIM_PORT_GPIO(bank)		(2 + (bank))
 #define PRUSIM_NUM_PORTS		PRUSIM_PORT_GPIO(PRUSIM_GPIO_BANKS)
 
+/* AM335x GPIO bank registers the simulator models (offsets in a bank) */
+#define PRUSIM_GPIO_OE			0x134u
+#define PRUSIM_GPIO_DATAIN		0x138u
+#define PRUSIM_GPIO_DATAOUT		0x13cu
+#define PRUSIM_GPIO_CLEARDATAOUT	0x190u
+#define PRUSIM_GPIO_SETDATAOUT		0x194u
+
 /* The local address of the OCP master port; lower addresses stay inside. */
 #define PRUSIM_OCP_BASE		0x80000u
 /* Where the GNU toolchain links code: ELF addresses with this bit are IRAM. */
@@ -522,6 +529,8 @@ void prusim_get_status(const struct prusim *s, unsigned int core,
 void prusim_input_changed(struct prusim *s, unsigned int port);
 void prusim_memory_written(struct prusim *s);
 void prusim_yield(struct prusim *s);
+void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value);
+u32 prusim_gpio_read(struct prusim *s, unsigned int bank, u32 reg);
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */
 void prusim_raise_event(struct prusim *s, unsigned int event);

@@ -19,11 +19,11 @@
 #define IEP_DEFAULT_INC(cfg)	(((cfg) >> 4) & 0xf)
 
 #define GPIO_WINDOW		0x1000u
-#define GPIO_OE			0x134u
-#define GPIO_DATAIN		0x138u
-#define GPIO_DATAOUT		0x13cu
-#define GPIO_CLEARDATAOUT	0x190u
-#define GPIO_SETDATAOUT		0x194u
+#define GPIO_OE			PRUSIM_GPIO_OE
+#define GPIO_DATAIN		PRUSIM_GPIO_DATAIN
+#define GPIO_DATAOUT		PRUSIM_GPIO_DATAOUT
+#define GPIO_CLEARDATAOUT	PRUSIM_GPIO_CLEARDATAOUT
+#define GPIO_SETDATAOUT		PRUSIM_GPIO_SETDATAOUT
 
 static const u32 prusim_gpio_base[PRUSIM_GPIO_BANKS] = {
 	0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
@@ -135,6 +135,33 @@ static void gpio_land(struct prusim *s, const struct prusim_timed *t)
 		gpio_set_dataout(s, t->bank, g->dataout | v);
 		break;
 	}
+}
+
+/**
+ * prusim_gpio_write() - a store by the ARM to a GPIO bank register
+ * @s: simulator
+ * @bank: GPIO bank 0..3
+ * @reg: register offset: OE, DATAOUT, CLEARDATAOUT or SETDATAOUT (others
+ *	are ignored)
+ * @value: the value stored
+ *
+ * The ARM's store takes effect at &prusim.now (call it between prusim_run()
+ * calls), after the PRU stores that have landed by then and before those
+ * still on their way; pin changes are reported through &prusim_ops.pin as
+ * for the PRU's stores.
+ */
+void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value)
+{
+	struct prusim_timed t = {
+		.kind = PRUSIM_TIMED_GPIO, .bank = bank, .reg = reg,
+		.value = value, .mask = ~0u,
+	};
+
+	if (bank >= PRUSIM_GPIO_BANKS)
+		return;
+	prusim_queue_run(s);
+	gpio_land(s, &t);
+	s->epoch++;
 }
 
 /**
@@ -804,6 +831,21 @@ static u32 gpio_read32(struct prusim *s, unsigned int bank, u32 off)
 		return gpio_reg(s, bank, GPIO_DATAOUT);
 	}
 	return 0;
+}
+
+/**
+ * prusim_gpio_read() - a load by the ARM from a GPIO bank register
+ * @s: simulator
+ * @bank: GPIO bank 0..3
+ * @reg: register offset: OE, DATAIN or DATAOUT (others read 0)
+ *
+ * Return: the register as a load issued at &prusim.now sees it.
+ */
+u32 prusim_gpio_read(struct prusim *s, unsigned int bank, u32 reg)
+{
+	if (bank >= PRUSIM_GPIO_BANKS)
+		return 0;
+	return gpio_read32(s, bank, reg);
 }
 
 /*

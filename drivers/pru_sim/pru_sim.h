@@ -92,6 +92,9 @@ struct pru_sim_trace {
 
 #define PRU_SIM_TRACE_LEN	BIT(18)
 
+/* Pad registers of the AM335x control module: conf_* at 0x800..0xa34 */
+#define PRU_SIM_NUM_PADS	142
+
 /**
  * struct pru_sim - one simulated PRU-ICSS
  * @dev: the "prukit,pruss-sim" platform device
@@ -128,6 +131,14 @@ struct pru_sim_trace {
  * @ocp_err: the reason of the last refused OCP access
  * @input: stimulus per input port (PRUSIM_PORT_*)
  * @trace: pin trace
+ * @pad: pad registers of the simulated board (pru_sim_board.c), offset
+ *	0x800 + 4 * index; written under @lock, read with READ_ONCE() too
+ * @pads_live: a simulated pin controller is bound: PRU outputs reach the
+ *	trace only through pads muxed to them
+ * @r30: the level of every PRU output (bit PRUSIM_PIN_R30())
+ * @r30_shown: the level each output's pad shows, as last traced
+ * @unmuxed_writes: output changes that reached no pad
+ * @unmuxed_warned: outputs already reported in the kernel log
  * @slice_cycles: cycles simulated per slice (module parameter slice_cycles)
  * @host_ns: host time spent simulating, for the statistics
  * @debugfs: debugfs directory
@@ -163,6 +174,12 @@ struct pru_sim {
 	char ocp_err[PRUSIM_REASON_LEN];
 	struct pru_sim_input input[PRUSIM_NUM_PORTS];
 	struct pru_sim_trace trace;
+	u32 pad[PRU_SIM_NUM_PADS];
+	bool pads_live;
+	u64 r30;
+	u64 r30_shown;
+	u64 unmuxed_writes;
+	u64 unmuxed_warned;
 	u64 slice_cycles;
 	u64 host_ns;
 	struct dentry *debugfs;
@@ -183,6 +200,10 @@ bool pru_sim_inputs_pending(struct pru_sim *sim);
 void pru_sim_core_started(struct pru_sim *sim);
 void pru_sim_inputs_free(struct pru_sim *sim);
 
+void pru_sim_r30_changed(struct pru_sim *sim, u64 cycle, unsigned int pin, bool level);
+
 extern struct platform_driver pru_sim_core_driver;
+extern struct platform_driver pru_sim_pinmux_driver;
+extern struct platform_driver pru_sim_gpio_driver;
 
 #endif /* PRU_SIM_H */

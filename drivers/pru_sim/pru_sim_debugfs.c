@@ -14,7 +14,10 @@
  *                   core runs, else from the next core start.  An empty
  *                   write sets the input to 0.
  *              (r)  the number of entries, period and origin in use
- *   stats      (r)  cycles, instructions, stalls, state and halt reason
+ *   stats      (r)  cycles, instructions, stalls, state and halt reason;
+ *                   whether PRU outputs go through pad muxing, and how many
+ *                   output changes reached no pad
+ *   pads       (rw) pad registers of the simulated board (pru_sim_board.c)
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
@@ -409,6 +412,8 @@ static int pru_sim_stats_show(struct seq_file *m, void *v)
 	}
 	seq_printf(m, "trace_events %u trace_dropped %llu trace_origin %llu\n",
 		   sim->trace.count, sim->trace.dropped, sim->trace.origin);
+	seq_printf(m, "pads %s unmuxed_writes %llu\n", sim->pads_live ? "checked" : "unchecked",
+		   sim->unmuxed_writes);
 	seq_puts(m, "routes");
 	for (i = 0; i < PRUSIM_NUM_EVENTS; i++)
 		if (sim->mapped & BIT_ULL(i))

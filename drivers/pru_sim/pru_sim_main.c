@@ -118,7 +118,10 @@ static int pru_sim_ocp_write(void *ctx, u32 addr, const void *buf, unsigned int 
 
 static void pru_sim_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
 {
-	pru_sim_trace_pin(ctx, cycle, pin, level);
+	if (pin < PRUSIM_PIN_GPIO(0, 0))
+		pru_sim_r30_changed(ctx, cycle, pin, level);
+	else
+		pru_sim_trace_pin(ctx, cycle, pin, level);
 }
 
 static u32 pru_sim_input_cb(void *ctx, unsigned int port, u64 cycle, u64 *next_change)
@@ -397,31 +400,29 @@ static struct platform_driver pru_sim_driver = {
 	},
 };
 
+/* The children's drivers first: pru_sim_probe() populates them at once. */
+static struct platform_driver * const pru_sim_drivers[] = {
+	&pru_sim_core_driver,
+	&pru_sim_pinmux_driver,
+	&pru_sim_gpio_driver,
+	&pru_sim_driver,
+};
+
 static int __init pru_sim_init(void)
 {
 	int ret;
 
 	pru_sim_debugfs_root = debugfs_create_dir("pru_sim", NULL);
-	ret = platform_driver_register(&pru_sim_core_driver);
+	ret = platform_register_drivers(pru_sim_drivers, ARRAY_SIZE(pru_sim_drivers));
 	if (ret)
-		goto remove_debugfs;
-	ret = platform_driver_register(&pru_sim_driver);
-	if (ret)
-		goto unregister_core;
-	return 0;
-
-unregister_core:
-	platform_driver_unregister(&pru_sim_core_driver);
-remove_debugfs:
-	debugfs_remove(pru_sim_debugfs_root);
+		debugfs_remove(pru_sim_debugfs_root);
 	return ret;
 }
 module_init(pru_sim_init);
 
 static void __exit pru_sim_exit(void)
 {
-	platform_driver_unregister(&pru_sim_driver);
-	platform_driver_unregister(&pru_sim_core_driver);
+	platform_unregister_drivers(pru_sim_drivers, ARRAY_SIZE(pru_sim_drivers));
 	debugfs_remove(pru_sim_debugfs_root);
 }
 module_exit(pru_sim_exit);

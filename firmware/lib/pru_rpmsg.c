@@ -60,7 +60,7 @@ static int16_t pru_rpmsg_ret(int ret)
  */
 static int transport_ready(struct pru_rpmsg_transport *transport)
 {
-	return transport->rpmsg.vdev != NULL;
+	return !!transport->rpmsg.vdev;
 }
 
 int16_t pru_rpmsg_init(struct pru_rpmsg_transport *transport,

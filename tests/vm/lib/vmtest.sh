@@ -50,6 +50,13 @@ pru_rproc() {
 	return 1
 }
 
+# pad_mux OFFSET VALUE - set a pad of the simulated board (what config-pin
+# does on BeagleBoard's images): e.g. "pad_mux 0x9a4 0x05" puts P9_27 in
+# mode 5, PRU0 R30 bit 5.  Fails for a pad a pinctrl state holds.
+pad_mux() {
+	echo "$1 $2" >"$(sim_dir)/pads"
+}
+
 # pru_state N - state of PRU N in the simulator (disabled/running/halted...)
 pru_state() {
 	sed -n "s/^pru$1 state \([a-z]*\) .*/\1/p" "$(sim_dir)/stats"
