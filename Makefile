@@ -8,7 +8,8 @@
 #   make install          modules, PRU firmware, overlays, udev rule
 #   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse)
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
-#   make overlays         device-tree overlays and bindings, validated
+#   make overlays         device-tree overlays (out/overlays/*.dtbo), build only;
+#                         make check validates them (scripts/overlays.sh --check)
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
 #   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]
@@ -59,10 +60,15 @@ firmware_install: firmware
 	install -m 0644 $$($(MAKE) -s -C firmware O=$(BUILD)/firmware list-install) \
 		$(DESTDIR)$(FIRMWARE_DIR)/prukit/
 
+# Build only (cpp, dtc and the kernel's dt-bindings headers); the validation
+# against base trees and dt-schema is make check's.
 overlays:
-	$(SCRIPTS)/overlays.sh
+	$(SCRIPTS)/overlays.sh --build
 
+# The blobs "make overlays" built.
 overlays_install:
+	@ls $(BUILD)/overlays/*.dtbo >/dev/null 2>&1 || \
+		{ echo "no overlays in $(BUILD)/overlays: run make overlays first"; exit 1; }
 	install -d $(DESTDIR)$(FIRMWARE_DIR)
 	install -m 0644 $(BUILD)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
 

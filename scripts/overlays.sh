@@ -1,30 +1,54 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# overlays.sh - build prukit's device-tree overlays and prove them against real
-# base trees (called by "make overlays").
+# overlays.sh [--build | --check] - build prukit's device-tree overlays, and
+# with --check prove them against real base trees.
 #
-#  1. overlays/*.dtso: cpp (kernel dt-bindings headers) + dtc -@, any cpp or
-#     dtc warning is an error; result in out/overlays/*.dtbo.  Built against
-#     every kernel series below; the blobs must be identical.
-#  2. Documentation/devicetree/bindings/**/*.yaml (N >= 0): yamllint,
+# --build (the default; "make overlays"): every overlays/*.dtso compiled by
+# scripts/dtso-build.sh (cpp with the linux 6.12 dt-bindings headers + dtc -@,
+# any warning is an error) into out/overlays/*.dtbo.  Needs only cpp,
+# device-tree-compiler and the headers; a few seconds.
+#
+# --check ("make check"): the build, and
+#  1. the overlays built with the headers of every kernel series below; the
+#     blobs must be identical.
+#  2. The pin table overlays/am335x-pru-pins.tsv checked against each
+#     kernel's am33xx.h, and the pin check of each overlay's blob: the PRU
+#     signals its "prukit-pins:" lines name are muxed to the right mode by a
+#     pinctrl-single group some node's pinctrl-0 applies, r31 (input) pads
+#     have INPUT_EN, every pad is a known AM335x pad and appears once.
+#  3. Documentation/devicetree/bindings/**/*.yaml (N >= 0): yamllint,
 #     dt-doc-validate, and the examples compiled and checked with dt-validate,
 #     once per kernel series with that kernel's bindings.
-#  3. am335x-boneblack and am335x-pocketbeagle built with -@ from Debian's
+#  4. am335x-boneblack and am335x-pocketbeagle built with -@ from Debian's
 #     linux-source 6.1 and 6.12; every overlay applied with fdtoverlay; the
 #     merged tree checked with dt-validate against the kernel's bindings plus
 #     ours; it must not add any message to those of the base tree alone; the
-#     "prukit-expect:" lines of each overlay are asserted with fdtget.
-#  4. Self-tests that prove steps 2 and 3 can fail.
+#     "prukit-expect:" lines of each overlay are asserted with fdtget; the
+#     pin check again on the merged tree, plus: no pad of the overlay in a
+#     pinctrl group an enabled node of the base tree uses, unless the overlay
+#     names that board function in "prukit-conflicts:".
+#  5. Self-tests that prove steps 2-4 can fail: the bogus-property overlay
+#     and binding fixtures below, and the pin-check fixtures in
+#     tests/overlays/*.dtso, each of which must be rejected for exactly the
+#     reason its "prukit-selftest:" line names (or pass if it says "pass").
 #
-# Prints PASS:/FAIL: lines and a SUMMARY: line per overlay x base tree; exits
-# non-zero if anything failed.  Processed schemas, base dtbs and dt-validate
-# results are cached under $PRUKIT_CACHE/dt keyed by their inputs.
+# Prints PASS:/FAIL: lines (--check: and a SUMMARY: line per overlay x base
+# tree); exits non-zero if anything failed.  Processed schemas, base dtbs and
+# dt-validate results are cached under $PRUKIT_CACHE/dt keyed by their inputs.
 #
-# Environment: PRUKIT_DT_SERIES (default "6.1 6.12"), PRUKIT_DT_BOARDS
-# (default "am335x-boneblack am335x-pocketbeagle"), PRUKIT_JOBS (1 or 2).
+# Environment (--check): PRUKIT_DT_SERIES (default "6.1 6.12"),
+# PRUKIT_DT_BOARDS (default "am335x-boneblack am335x-pocketbeagle"),
+# PRUKIT_JOBS (1 or 2).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
+
+MODE=build
+case ${1:-} in
+"" | --build) ;;
+--check) MODE=check ;;
+*) echo "usage: ${0##*/} [--build | --check]" >&2; exit 2 ;;
+esac
 
 SERIES=${PRUKIT_DT_SERIES:-"6.1 6.12"}
 BOARDS=${PRUKIT_DT_BOARDS:-"am335x-boneblack am335x-pocketbeagle"}
@@ -46,10 +70,13 @@ BASE_DTC_FLAGS="-Wno-unit_address_vs_reg -Wno-avoid_unnecessary_addr_size -Wno-a
 	-Wno-interrupt_provider"
 
 OVL_SRC=$PRUKIT_TOP/overlays
+PIN_TABLE=$OVL_SRC/am335x-pru-pins.tsv
+FIXTURES=$PRUKIT_TOP/tests/overlays
 BIND_SRC=$PRUKIT_TOP/Documentation/devicetree/bindings
 OUT=$PRUKIT_TOP/out/overlays
 WORK=$OUT/check
 CACHE=$PRUKIT_CACHE/dt
+DTSO_BUILD=$PRUKIT_TOP/scripts/dtso-build.sh
 
 nfail=0
 npass=0
@@ -59,6 +86,37 @@ fail() { printf 'FAIL: %s\n' "$*"; nfail=$((nfail + 1)); }
 show() { sed -n "1,${2:-12}p" "$1" | cut -c1-200 | sed 's/^/    /'; }
 
 sha() { sha256sum "$@" | cut -c1-16; }
+
+overlays=()
+for src in "$OVL_SRC"/*.dtso; do
+	[ -e "$src" ] || continue
+	overlays+=("$(basename "$src" .dtso)")
+done
+
+# ------------------------------------------------------------ --build
+
+if [ "$MODE" = build ]; then
+	k=$("$PRUKIT_TOP/scripts/linux-source.sh" 6.12 dt) || die "linux-source.sh 6.12 dt failed"
+	mkdir -p "$OUT"
+	rm -f "$OUT"/*.dtbo
+	[ ${#overlays[@]} -gt 0 ] || fail "overlays: no overlays/*.dtso found"
+	for o in "${overlays[@]}"; do
+		if "$DTSO_BUILD" --kdir "$k" "$OVL_SRC/$o.dtso" "$OUT/$o.dtbo" 2>"$OUT/$o.log"; then
+			pass "build $o.dtbo (cpp with linux-6.12 dt-bindings + dtc -@, no warnings)"
+			rm -f "$OUT/$o.log"
+		else
+			fail "build $o.dtbo:"
+			show "$OUT/$o.log" 20
+		fi
+	done
+	msg "overlays in ${OUT#"$PRUKIT_TOP"/}: ${overlays[*]/%/.dtbo}; validate with" \
+		"scripts/overlays.sh --check (make check)"
+	printf '%d passed, %d failed\n' "$npass" "$nfail"
+	[ "$nfail" -eq 0 ] || exit 1
+	exit 0
+fi
+
+# ------------------------------------------------------------ --check
 
 need_pkgs cpp device-tree-compiler dt-schema python3-libfdt python3-venv yamllint xz-utils
 for t in cpp dtc fdtoverlay fdtget dt-validate dt-mk-schema dt-doc-validate dt-extract-example \
@@ -127,24 +185,8 @@ done
 
 # ----------------------------------------------------------------- overlays
 
-# compile_dtso SRC KDIR OUT: cpp + dtc -@; fails (and shows why) on any warning.
-compile_dtso() {
-	local src=$1 k=$2 out=$3 log=$3.log
-	: >"$log"
-	if ! cpp -nostdinc -undef -D__DTS__ -x assembler-with-cpp -I "$k/include" \
-		-I "$(dirname "$src")" -o "$out.pre" "$src" 2>>"$log"; then
-		return 1
-	fi
-	dtc -@ -I dts -O dtb -o "$out" "$out.pre" 2>>"$log" || return 1
-	[ ! -s "$log" ]
-}
-
-overlays=()
-for src in "$OVL_SRC"/*.dtso; do
-	[ -e "$src" ] || continue
-	overlays+=("$(basename "$src" .dtso)")
-done
 [ ${#overlays[@]} -gt 0 ] || fail "overlays: no overlays/*.dtso found"
+FIRST_SERIES=${SERIES%% *}
 
 declare -A OVL_OK
 for o in "${overlays[@]}"; do
@@ -153,10 +195,11 @@ for o in "${overlays[@]}"; do
 	first=
 	for s in $SERIES; do
 		mkdir -p "$WORK/$s"
-		if compile_dtso "$src" "${KDIR[$s]}" "$WORK/$s/$o.dtbo"; then
-			pass "build $o.dtbo with linux-$s dt-bindings (cpp + dtc -@, no warnings)"
+		if "$DTSO_BUILD" --kdir "${KDIR[$s]}" "$src" "$WORK/$s/$o.dtbo" \
+			2>"$WORK/$s/$o.dtbo.log"; then
+			pass "build $o.dtbo with linux-$s dt-bindings (dtso-build.sh: cpp + dtc -@, no warnings)"
 		else
-			fail "build $o.dtbo with linux-$s dt-bindings: cpp/dtc reported:"
+			fail "build $o.dtbo with linux-$s dt-bindings:"
 			show "$WORK/$s/$o.dtbo.log" 20
 			OVL_OK[$o]=0
 			continue
@@ -175,6 +218,459 @@ for o in "${overlays[@]}"; do
 		fail "$o: no 'prukit-expect:' lines in $o.dtso, nothing to assert in merged trees"
 		OVL_OK[$o]=0
 	fi
+done
+
+# ---------------------------------------------------------------- pin check
+#
+# The pin table (overlays/am335x-pru-pins.tsv) says which pad carries which
+# PRU signal in which mux mode, on which header pin, and which board function
+# already uses it.  An overlay names the signals its firmware uses in
+# "prukit-pins:" lines and the board functions it takes pads from in
+# "prukit-conflicts:" lines.  Trees are read by decompiling them (dtc -O dts)
+# into a table; the checks are one awk program run on the overlay's blob and
+# on every merged tree.
+
+# dt_table DTB OUT: one line per fact the pin check needs, fields separated by
+# TABs: "node PATH ENABLED PHANDLE" (ENABLED: status okay or absent, here and
+# in every ancestor), "group PATH CELLS..." (pinctrl-single,pins),
+# "pinctrl PATH N PHANDLES..." (pinctrl-N), "cells PATH N" (#pinctrl-cells),
+# "sym LABEL PATH" (__symbols__), "fixup LABEL FRAGMENT" (a fragment whose
+# target is LABEL), "tpath FRAGMENT PATH" (target-path).  Numbers decimal.
+# shellcheck disable=SC2016 # an awk program
+DT_TABLE_AWK='
+function num(s,   v, i, c) {
+	s = tolower(s)
+	if (s !~ /^0x/) return s + 0
+	v = 0
+	for (i = 3; i <= length(s); i++) {
+		c = index("0123456789abcdef", substr(s, i, 1))
+		if (!c) return -1
+		v = v * 16 + c - 1
+	}
+	return v
+}
+function cells(v,   t, n, i, o) {
+	gsub(/[<>,;]/, " ", v)
+	n = split(v, t, " ")
+	o = ""
+	for (i = 1; i <= n; i++) o = o (i > 1 ? " " : "") num(t[i])
+	return o
+}
+function str(v) { sub(/^"/, "", v); sub(/";$/, "", v); return v }
+function cur() { return d > 0 ? path[d] : "/" }
+BEGIN { d = -1; OFS = "\t" }
+/^\/dts-v1\/;$/ || /^\/memreserve\// || /^[ \t]*$/ { next }
+/ \{$/ {
+	name = $0
+	sub(/^[ \t]+/, "", name)
+	sub(/ \{$/, "", name)
+	d++
+	path[d] = d == 0 ? "/" : (d == 1 ? "" : path[d - 1]) "/" name
+	en[d] = d == 0 ? 1 : en[d - 1]
+	ph[d] = "-"
+	next
+}
+/^[ \t]*\};$/ { print "node", cur(), en[d], ph[d]; d--; next }
+{
+	line = $0
+	sub(/^[ \t]+/, "", line)
+	i = index(line, " = ")
+	if (i) { pn = substr(line, 1, i - 1); pv = substr(line, i + 3) }
+	else { pn = line; sub(/;$/, "", pn); pv = "" }
+	if (pn == "status")
+		en[d] = (d == 0 || en[d - 1]) && (pv == "\"okay\";" || pv == "\"ok\";")
+	else if (pn == "phandle") ph[d] = cells(pv)
+	else if (pn ~ /^pinctrl-[0-9]+$/) print "pinctrl", cur(), substr(pn, 9), cells(pv)
+	else if (pn == "pinctrl-single,pins") print "group", cur(), cells(pv)
+	else if (pn == "#pinctrl-cells") print "cells", cur(), cells(pv)
+	else if (pn == "target-path") print "tpath", cur(), str(pv)
+	else if (cur() == "/__symbols__") print "sym", pn, str(pv)
+	else if (cur() == "/__fixups__") {
+		n = split(str(pv), t, /\\0/)
+		for (j = 1; j <= n; j++)
+			if (t[j] ~ /:target:0$/) { sub(/:target:0$/, "", t[j]); print "fixup", pn, t[j] }
+	}
+}'
+
+dt_table() { dtc -q -I dtb -O dts "$1" | awk "$DT_TABLE_AWK" >"$2"; }
+
+# The pin table itself, against one kernel's am33xx.h: prints one line per
+# problem and, last, "ROWS PADS" counts.  Files: FS=TAB the table, then the
+# header with the default FS.
+# shellcheck disable=SC2016 # an awk program
+PIN_TABLE_AWK='
+function num(s,   v, i, c) {
+	s = tolower(s)
+	if (s !~ /^0x[0-9a-f]+$/) return -1
+	v = 0
+	for (i = 3; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1
+	return v
+}
+FNR == 1 { file++ }
+file == 1 && /^# conflict: / { split(substr($0, 13), c, "\t"); known_fn[c[1]] = 1; next }
+file == 1 && (/^#/ || /^[ \t]*$/) { next }
+file == 1 {
+	rows++
+	where = "line " FNR
+	if (NF != 8) { print where ": " NF " fields, not 8"; next }
+	row_pad[rows] = $1; row_off[rows] = $2; row_at[rows] = where
+	o = num($2)
+	if (o < 0) print where ": offset " $2 " is not a hex number"
+	if ($5 !~ /^[0-7]$/) print where ": mode " $5 " is not 0-7"
+	if ($6 !~ /^pru[01]_r3[01]_([0-9]|[12][0-9]|3[01])$/) print where ": signal " $6 " is not pruN_r30_B/pruN_r31_B"
+	if ($3 !~ /^(P[89]_[0-9]+[AB]?|-)$/) print where ": Black pin " $3 " is not P8_N/P9_N"
+	if ($4 !~ /^(P[12]\.[0-9][0-9]|-)$/) print where ": Pocket pin " $4 " is not P1.NN/P2.NN"
+	if ($3 == "-" && $4 == "-") print where ": " $1 " is on no header"
+	if ($7 != "-" && !($7 in known_fn)) print where ": black_conflict " $7 " has no \"# conflict:\" line"
+	if ($8 != "-" && !($8 in known_fn)) print where ": pocket_conflict " $8 " has no \"# conflict:\" line"
+	if ((o, $5) in mux) print where ": " $1 " mode " $5 " also on line " mux[o, $5]
+	mux[o, $5] = FNR
+	if ((o, $6) in sig) print where ": " $6 " on " $1 " twice"
+	sig[o, $6] = 1
+	k = $1 "\t" $2 "\t" $3 "\t" $4 "\t" $7 "\t" $8
+	if (o in padrow && padrow[o] != k) print where ": " $1 ": name, headers or conflicts differ from another row of the same pad"
+	if (!(o in padrow)) {
+		pads++
+		padrow[o] = k
+		if ($3 != "-") { if ($3 in bpin) print where ": Black " $3 " also on " bpin[$3]; bpin[$3] = $1 }
+		if ($4 != "-") { if ($4 in ppin) print where ": Pocket " $4 " also on " ppin[$4]; ppin[$4] = $1 }
+	}
+	next
+}
+$1 == "#define" && $2 ~ /^AM335X_PIN_/ { def[$2] = num($3) }
+END {
+	for (i = 1; i <= rows; i++)
+		if (!(row_pad[i] in def)) print row_at[i] ": " row_pad[i] " is not defined in am33xx.h"
+		else if (def[row_pad[i]] != num(row_off[i]))
+			print row_at[i] ": " row_pad[i] " is " row_off[i] " here, " sprintf("0x%x", def[row_pad[i]]) " in am33xx.h"
+	print rows " " pads
+}'
+
+# The pin check.  -v what=blob|merged, pins and conflicts (the overlay's
+# declarations, space separated), board (black, pocket or empty: the pin
+# table column of conflicts); files: src=tsv TABLE src=hdr AM33XX_H
+# src=blob BLOB_TABLE [src=merged MERGED_TABLE].  Prints "PASS<TAB>message"
+# and "FAIL<TAB>tag<TAB>message"; the tags are what the self-test fixtures
+# name: cells, unref, unknown, twice, signal, mode, input, undeclared,
+# conflictname, merge, conflict.
+# shellcheck disable=SC2016 # an awk program
+PINCHECK_AWK='
+function num(s,   v, i, c) {
+	s = tolower(s)
+	if (s !~ /^0x/) return s + 0
+	v = 0
+	for (i = 3; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1
+	return v
+}
+function bor(a, b,   r, m) {
+	r = 0; m = 1
+	while (a > 0 || b > 0) {
+		if (a % 2 == 1 || b % 2 == 1) r += m
+		a = int(a / 2); b = int(b / 2); m *= 2
+	}
+	return r
+}
+function hx(n) { return sprintf("0x%x", n) }
+function pins_of(o,   s) {
+	s = ""
+	if (hb[o] != "" && hb[o] != "-") s = "Black " hb[o]
+	if (hp[o] != "" && hp[o] != "-") s = s (s == "" ? "" : ", ") "Pocket " hp[o]
+	return s
+}
+function pad(o,   n) {
+	n = (o in pname) ? pname[o] : "pad " hx(o)
+	return n (pins_of(o) != "" ? " (" pins_of(o) ")" : "") 
+}
+function base(p) { sub(/.*\//, "", p); return p }
+function parent(p) { sub(/\/[^\/]*$/, "", p); return p == "" ? "/" : p }
+# a node by label if it has one
+function lbl(s, p) { return ((s, p) in rsym) ? "&" rsym[s, p] : p }
+function blobnode(p,   f) {
+	f = p
+	sub(/\/__overlay__.*/, "", f)
+	if (("blob", f) in fix) return "&" fix["blob", f] substr(p, length(f) + 13)
+	return p
+}
+function ok(m) { print "PASS\t" m }
+function bad(tag, m) { print "FAIL\t" tag "\t" m; nbad++ }
+# users S GROUP IDX NEEDEN: nodes whose pinctrl-IDX (IDX < 0: any) holds the
+# phandle of GROUP; NEEDEN: only enabled ones
+function users(s, g, idx, needen,   ph, k, n, v, i, r, nm) {
+	if (!((s, g) in phof)) return ""
+	ph = phof[s, g]
+	r = ""
+	for (k = 1; k <= np[s]; k++) {
+		if (idx >= 0 && pi[s, k] != idx) continue
+		if (needen && !en[s, pp[s, k]]) continue
+		n = split(pv[s, k], v, " ")
+		for (i = 1; i <= n; i++)
+			if (v[i] == ph) {
+				nm = s == "blob" ? blobnode(pp[s, k]) : lbl(s, pp[s, k])
+				r = r (r == "" ? "" : ", ") nm
+				break
+			}
+	}
+	return r
+}
+# where a group of the blob lands in the merged tree
+function mpath(gp,   f, rest, t) {
+	f = gp
+	sub(/\/__overlay__.*/, "", f)
+	rest = substr(gp, length(f) + 13)
+	if (("blob", f) in fix) {
+		if (!(("merged", fix["blob", f]) in sym)) return ""
+		t = sym["merged", fix["blob", f]]
+	} else if (("blob", f) in tpath) t = tpath["blob", f]
+	else return ""
+	return t (t == "/" && rest != "" ? substr(rest, 2) : rest)
+}
+# add the pads of group G (tree S) to the applied set
+function apply(s, g, name,   c, v, j, o) {
+	c = split(cellsof[s, g], v, " ")
+	for (j = 1; j + 2 <= c; j += 3) {
+		o = v[j] + 2048
+		amode[o] = bor(v[j + 1], v[j + 2]) % 8
+		aval[o] = bor(v[j + 1], v[j + 2])
+		agrp[o] = name
+	}
+}
+function signals(   i, s, n, p, k, o, found, wrong) {
+	for (i = 1; i <= ndecl; i++) {
+		s = decl[i]
+		if (!(s in sigpads)) {
+			bad("signal", "prukit-pins names " s ", which is no signal of the pin table")
+			continue
+		}
+		n = split(sigpads[s], p, " ")
+		found = ""
+		wrong = ""
+		for (k = 1; k <= n; k++) {
+			o = p[k]
+			if (!(o in amode)) continue
+			if (amode[o] == sigmode[s, o]) found = o
+			else wrong = wrong "; " pad(o) " is in mode " amode[o] ", " s " needs " sigmode[s, o]
+		}
+		if (found == "") {
+			if (wrong != "") bad("mode", s " is not muxed: " substr(wrong, 3))
+			else bad("mode", s " is not muxed: none of its pads is in a group a pinctrl-0 applies")
+			continue
+		}
+		o = found
+		if (s ~ /_r31_/ && int(aval[o] / 32) % 2 == 0) {
+			bad("input", s " on " pad(o) ": conf " hx(aval[o] - amode[o]) " lacks INPUT_EN (bit 5): the receiver is off, r31 would read 0")
+			continue
+		}
+		ok(s " on " pad(o) ": mode " amode[o] (s ~ /_r31_/ ? ", INPUT_EN" : "") ", group " agrp[o])
+	}
+	for (o in amode)
+		if ((o, amode[o]) in bysig && !(bysig[o, amode[o]] in isdecl))
+			bad("undeclared", pad(o) " is muxed to " bysig[o, amode[o]] " (mode " amode[o] "), which prukit-pins does not list")
+}
+function blobchecks(   i, gp, c, v, j, o, refs, npads, names) {
+	if (ng["blob"] == 0 && ndecl == 0) {
+		ok("no prukit-pins and no pinctrl groups: it uses no pins")
+		return
+	}
+	npads = 0
+	names = ""
+	for (i = 1; i <= ng["blob"]; i++) {
+		gp = gl["blob", i]
+		names = names (names == "" ? "" : ", ") base(gp)
+		c = split(cellsof["blob", gp], v, " ")
+		if (c == 0 || c % 3 != 0) {
+			bad("cells", "group " base(gp) " has " c " cells, not AM33XX_PADCONF() triples (offset conf mux)")
+			continue
+		}
+		refs = users("blob", gp, 0, 0)
+		if (refs == "") bad("unref", "group " base(gp) " is in no pinctrl-0 of the overlay: it would never be applied")
+		for (j = 1; j + 2 <= c; j += 3) {
+			o = v[j] + 2048
+			npads++
+			if (!(o in known))
+				bad("unknown", "group " base(gp) ": pinctrl offset " hx(v[j]) " (pad " hx(o) ") is no AM335x pad of am33xx.h")
+			if (o in seen) bad("twice", pad(o) " is muxed twice: in " seen[o] " and " base(gp))
+			else seen[o] = base(gp)
+		}
+		if (refs != "") apply("blob", gp, base(gp) " (pinctrl-0 of " refs ")")
+	}
+	for (i = 1; i <= nconf; i++)
+		if (!(conf[i] in cname))
+			bad("conflictname", "prukit-conflicts names " conf[i] ", which the pin table does not define")
+	signals()
+	if (nbad == 0)
+		ok(npads " pad(s) in " ng["blob"] " group(s) (" names "): known AM335x pads, none twice, each group in a pinctrl-0" (nconf ? "; declared conflicts: " conflicts : ""))
+}
+function mergedchecks(   i, gp, mp, refs, k, n, v, j, c, w, o, g, node, fn, key, nconfl) {
+	for (i = 1; i <= ng["blob"]; i++) {
+		gp = gl["blob", i]
+		c = split(cellsof["blob", gp], v, " ")
+		for (j = 1; j + 2 <= c; j += 3) ovpad[v[j] + 2048] = 1
+		mp = mpath(gp)
+		if (mp == "" || !(("merged", mp) in cellsof)) {
+			bad("merge", "group " base(gp) " is not in the merged tree (fragment target unresolved)")
+			continue
+		}
+		ours[mp] = 1
+		if (cellsof["merged", mp] != cellsof["blob", gp]) {
+			bad("merge", "group " mp " differs from the overlay in the merged tree")
+			continue
+		}
+		if (pcells["merged", parent(mp)] != 2) {
+			bad("cells", "#pinctrl-cells of " lbl("merged", parent(mp)) " is " pcells["merged", parent(mp)] ", AM33XX_PADCONF() groups need 2")
+			continue
+		}
+		refs = users("merged", mp, 0, 1)
+		if (refs == "") {
+			bad("merge", "group " lbl("merged", mp) " is in no pinctrl-0 of an enabled node: never applied")
+			continue
+		}
+		apply("merged", mp, lbl("merged", mp))
+		ok("group " lbl("merged", mp) " applied by pinctrl-0 of enabled " refs)
+	}
+	signals()
+	# pads of the overlay in a group an enabled node of the base tree uses
+	nconfl = 0
+	for (k = 1; k <= np["merged"]; k++) {
+		node = pp["merged", k]
+		if (!en["merged", node]) continue
+		n = split(pv["merged", k], w, " ")
+		for (i = 1; i <= n; i++) {
+			g = byph["merged", w[i]]
+			if (g == "" || (g in ours) || !(("merged", g) in cellsof)) continue
+			c = split(cellsof["merged", g], v, " ")
+			for (j = 1; j + 2 <= c; j += 3) {
+				o = v[j] + 2048
+				if (!(o in ovpad)) continue
+				key = o SUBSEP g SUBSEP node
+				if (key in done) continue
+				done[key] = 1
+				nconfl++
+				fn = "-"
+				if (board == "black" && (o in bc)) fn = bc[o]
+				if (board == "pocket" && (o in pc)) fn = pc[o]
+				w0 = pad(o) " is also in " lbl("merged", g) ", pinctrl-" pi["merged", k] " of enabled " lbl("merged", node)
+				if (lbl("merged", node) ~ /^&pru[01]$/)
+					bad("conflict", w0 ", pins the base tree gives that PRU core: set its pinctrl-" pi["merged", k] " in the overlay (replacing them) or use another pad")
+				else if (fn != "-" && (fn in isconf))
+					ok(w0 ": declared conflict " fn (cname[fn] != "-" ? " (BeagleBoard images: " cname[fn] " in uEnv.txt frees it)" : " (no uEnv.txt line frees it)"))
+				else if (fn != "-")
+					bad("conflict", w0 ": board function " fn " not declared (prukit-conflicts: " fn ")")
+				else
+					bad("conflict", w0 ", no board function of the pin table: take the pad from that node in the overlay, or use another")
+			}
+		}
+	}
+	if (nconfl == 0) ok("no pad of the overlay in a pinctrl group of another enabled node")
+}
+BEGIN {
+	ndecl = split(pins, decl, " ")
+	for (i = 1; i <= ndecl; i++) isdecl[decl[i]] = 1
+	nconf = split(conflicts, conf, " ")
+	for (i = 1; i <= nconf; i++) isconf[conf[i]] = 1
+}
+src == "tsv" && /^# conflict: / { split(substr($0, 13), c, "\t"); cname[c[1]] = c[2]; next }
+src == "tsv" && (/^#/ || NF == 0) { next }
+src == "tsv" {
+	o = num($2)
+	n = tolower($1)
+	sub(/^am335x_pin_/, "", n)
+	pname[o] = n; hb[o] = $3; hp[o] = $4; bc[o] = $7; pc[o] = $8
+	sigmode[$6, o] = $5
+	sigpads[$6] = sigpads[$6] " " o
+	bysig[o, $5] = $6
+	next
+}
+src == "hdr" && $1 == "#define" && $2 ~ /^AM335X_PIN_/ && $3 ~ /^0x[0-9a-fA-F]+$/ {
+	o = num($3)
+	known[o] = 1
+	if (!(o in pname)) { n = tolower($2); sub(/^am335x_pin_/, "", n); pname[o] = n }
+	next
+}
+src == "blob" || src == "merged" {
+	if ($1 == "node") { en[src, $2] = $3; if ($4 != "-") { byph[src, $4] = $2; phof[src, $2] = $4 } }
+	else if ($1 == "group") {
+		v = ""
+		for (i = 3; i <= NF; i++) v = v (i > 3 ? " " : "") $i
+		cellsof[src, $2] = v
+		gl[src, ++ng[src]] = $2
+	} else if ($1 == "pinctrl") {
+		np[src]++
+		pp[src, np[src]] = $2; pi[src, np[src]] = $3
+		v = ""
+		for (i = 4; i <= NF; i++) v = v (i > 4 ? " " : "") $i
+		pv[src, np[src]] = v
+	} else if ($1 == "cells") pcells[src, $2] = $3
+	else if ($1 == "fixup") fix[src, $3] = $2
+	else if ($1 == "tpath") tpath[src, $2] = $3
+	else if ($1 == "sym") { sym[src, $2] = $3; if (!((src, $3) in rsym)) rsym[src, $3] = $2 }
+}
+END { if (what == "blob") blobchecks(); else mergedchecks() }'
+
+# decl_lines KEY DTSO: the words of the "KEY: ..." lines of DTSO, one line;
+# only a line that starts with KEY (after comment leaders) counts.
+decl_lines() {
+	sed -n "s|^[[:space:]/*]*$1:[[:space:]]*||p" "$2" | tr '\n' ' ' | sed 's/[[:space:]]*$//'
+}
+
+# pincheck DTSO BLOB_TABLE [MERGED_TABLE BOARD]: the pin check's lines.
+pincheck() {
+	local dtso=$1 blob=$2 merged=${3:-} board=${4:-} pins confs what=blob
+	local -a files=(src=tsv "$PIN_TABLE" src=hdr "$AM33XX_H" src=blob "$blob")
+	pins=$(decl_lines prukit-pins "$dtso")
+	confs=$(decl_lines prukit-conflicts "$dtso")
+	if [ -n "$merged" ]; then
+		what=merged
+		files+=(src=merged "$merged")
+	fi
+	awk -v what="$what" -v pins="$pins" -v conflicts="$confs" -v board="$board" \
+		"$PINCHECK_AWK" "${files[@]}"
+}
+
+# report_pins PREFIX FILE: PASS:/FAIL: lines for a pincheck output; returns
+# non-zero if it has a failure.
+report_pins() {
+	local prefix=$1 r=0 kind tag m
+	while IFS=$'\t' read -r kind tag m; do
+		if [ "$kind" = PASS ]; then
+			pass "$prefix: pins: $tag"
+		else
+			fail "$prefix: pins ($tag): $m"
+			r=1
+		fi
+	done <"$2"
+	return $r
+}
+
+# board_column BOARD: which conflict column of the pin table a base tree uses.
+board_column() {
+	case $1 in
+	am335x-boneblack) echo black ;;
+	am335x-pocketbeagle) echo pocket ;;
+	*) echo "" ;;
+	esac
+}
+
+AM33XX_H=${KDIR[$FIRST_SERIES]}/include/dt-bindings/pinctrl/am33xx.h
+mkdir -p "$WORK/pins"
+for s in $SERIES; do
+	h=${KDIR[$s]}/include/dt-bindings/pinctrl/am33xx.h
+	if awk -F'\t' "$PIN_TABLE_AWK" "$PIN_TABLE" FS=' ' "$h" >"$WORK/pins/table-$s" 2>&1 &&
+		[ "$(wc -l <"$WORK/pins/table-$s")" -eq 1 ]; then
+		read -r rows pads <"$WORK/pins/table-$s"
+		pass "pin table ${PIN_TABLE#"$PRUKIT_TOP"/}: $rows rows, $pads pads, well formed," \
+			"every pad name and offset as in linux-$s am33xx.h"
+	else
+		fail "pin table ${PIN_TABLE#"$PRUKIT_TOP"/} against linux-$s am33xx.h:"
+		show "$WORK/pins/table-$s" 20
+	fi
+done
+
+# The pin check of each overlay's blob (the same for every series).
+for o in "${overlays[@]}"; do
+	[ "${OVL_OK[$o]}" = 1 ] || continue
+	dt_table "$WORK/$FIRST_SERIES/$o.dtbo" "$WORK/pins/$o.blob"
+	pincheck "$OVL_SRC/$o.dtso" "$WORK/pins/$o.blob" >"$WORK/pins/$o.blob.out"
+	report_pins "$o.dtbo" "$WORK/pins/$o.blob.out" || true
 done
 
 # ------------------------------------------------------------- base trees
@@ -590,7 +1086,7 @@ done
 # tree; the SUMMARY text goes to $WORK/summary.SERIES.BOARD.OVERLAY.
 check_merged() {
 	local s=$1 b=$2 o=$3 m=${MERGED[$1/$2/$3]:-} bm=$WORK/$1/$2.msgs ok=1
-	local name="$o on $s/$b" label prop want path got nbase nnew nexp=0
+	local name="$o on $s/$b" label prop want path got nbase nnew nexp=0 npins
 	if [ -z "$m" ]; then
 		fail "$name: fdtoverlay could not apply it:"
 		cat "$WORK/$s/$b+$o.dtb.why"
@@ -629,9 +1125,18 @@ check_merged() {
 			ok=0
 		fi
 	done < <(sed -n 's/.*prukit-expect:[[:space:]]*//p' "$OVL_SRC/$o.dtso")
+	# the pin check on the merged tree (nothing to do for an overlay without groups)
+	npins=0
+	if grep -q '^group' "$WORK/pins/$o.blob" 2>/dev/null; then
+		dt_table "$m" "$m.pins"
+		pincheck "$OVL_SRC/$o.dtso" "$WORK/pins/$o.blob" "$m.pins" "$(board_column "$b")" \
+			>"$m.pins.out"
+		report_pins "$name" "$m.pins.out" || ok=0
+		npins=$(grep -c '^PASS' "$m.pins.out" || true)
+	fi
 	if [ $ok -eq 1 ]; then
 		echo "PASS (dt-schema ${DTS_VER[$s]}: $nbase base messages, 0 new;" \
-			"$nexp fdtget assertions)" >"$WORK/summary.$s.$b.$o"
+			"$nexp fdtget assertions; $npins pin checks)" >"$WORK/summary.$s.$b.$o"
 	else
 		echo "FAIL" >"$WORK/summary.$s.$b.$o"
 	fi
@@ -649,6 +1154,73 @@ for s in $SERIES; do
 			check_merged "$s" "$b" "$o"
 		done
 	done
+done
+
+# ------------------------------------------------------- pin-check self-tests
+
+# Every tests/overlays/*.dtso names in a "prukit-selftest: TAG" line the one
+# reason the pin check must reject it for (or "pass": it must pass).  It is
+# built, checked as a blob and on every base tree; the union of the reasons
+# of all FAIL lines must be exactly TAG.  Every reason below must be proven
+# by some fixture.
+SELFTEST_TAGS="mode input twice unknown conflict"
+mkdir -p "$WORK/fixtures"
+proven=" "
+for f in "$FIXTURES"/*.dtso; do
+	[ -e "$f" ] || continue
+	n=$(basename "$f" .dtso)
+	d=$WORK/fixtures/$n
+	want=$(decl_lines prukit-selftest "$f")
+	if [ -z "$want" ]; then
+		fail "self-test pins: ${f#"$PRUKIT_TOP"/} has no 'prukit-selftest:' line"
+		continue
+	fi
+	if ! "$DTSO_BUILD" --kdir "${KDIR[$FIRST_SERIES]}" "$f" "$d.dtbo" 2>"$d.log"; then
+		fail "self-test pins: ${f#"$PRUKIT_TOP"/} does not build:"
+		show "$d.log" 10
+		continue
+	fi
+	dt_table "$d.dtbo" "$d.blob"
+	pincheck "$f" "$d.blob" >"$d.out"
+	ntrees=0
+	for s in $SERIES; do
+		for b in $BOARDS; do
+			[ -n "${BASE[$s/$b]}" ] || continue
+			if ! fdtoverlay -i "${BASE[$s/$b]}" -o "$d.$s.$b.dtb" "$d.dtbo" >"$d.log" 2>&1; then
+				printf 'FAIL\tapply\tfdtoverlay cannot apply it to %s\n' "$s/$b" >>"$d.out"
+				continue
+			fi
+			dt_table "$d.$s.$b.dtb" "$d.$s.$b.pins"
+			pincheck "$f" "$d.blob" "$d.$s.$b.pins" "$(board_column "$b")" | sed "s|\$|  [$s/$b]|" >>"$d.out"
+			ntrees=$((ntrees + 1))
+		done
+	done
+	got=$(awk -F'\t' '$1 == "FAIL" { print $2 }' "$d.out" | sort -u | tr '\n' ' ')
+	nwhy=$(grep -c '^FAIL' "$d.out" || true)
+	why=$(awk -F'\t' '$1 == "FAIL" { print $3; exit }' "$d.out")
+	if [ "$want" = pass ]; then
+		if [ -z "$got" ]; then
+			pass "self-test pins: $n.dtso (valid) passes on its blob and $ntrees merged trees"
+		else
+			fail "self-test pins: $n.dtso (valid) is rejected (${got% }):"
+			grep '^FAIL' "$d.out" | show /dev/stdin 8
+		fi
+	elif [ "$got" = "$want " ]; then
+		pass "self-test pins: $n.dtso rejected for '$want' only ($nwhy time(s), blob and" \
+			"$ntrees merged trees), e.g.: $why"
+		proven="$proven$want "
+	elif [ -z "$got" ]; then
+		fail "self-test pins: $n.dtso is accepted; it must be rejected for '$want'"
+	else
+		fail "self-test pins: $n.dtso rejected for '${got% }', expected '$want' only:"
+		grep '^FAIL' "$d.out" | show /dev/stdin 8
+	fi
+done
+for t in $SELFTEST_TAGS; do
+	case $proven in
+	*" $t "*) ;;
+	*) fail "self-test pins: no fixture in ${FIXTURES#"$PRUKIT_TOP"/} proves rejection for '$t'" ;;
+	esac
 done
 
 # ------------------------------------------------------------------ summary
