@@ -237,6 +237,15 @@ static void pru_sim_pin_dbg_show(struct pinctrl_dev *pctl, struct seq_file *s, u
 	seq_printf(s, "0x%08x", READ_ONCE(pm->sim->pad[pin]));
 }
 
+static void pru_sim_group_free(struct pru_sim_pingroup *g)
+{
+	of_node_put(g->np);
+	kfree(g->vals);
+	kfree(g->pins);
+	kfree(g->name);
+	kfree(g);
+}
+
 /* Parse one "pinctrl-single,pins" node into a new group (under @pm->lock). */
 static struct pru_sim_pingroup *pru_sim_group_create(struct pru_sim_pinmux *pm,
 						     struct device_node *np)
@@ -250,15 +259,18 @@ static struct pru_sim_pingroup *pru_sim_group_create(struct pru_sim_pinmux *pm,
 		dev_err(pm->dev, "%pOF: pinctrl-single,pins needs %u cells per pad\n", np, per);
 		return ERR_PTR(-EINVAL);
 	}
-	g = devm_kzalloc(pm->dev, sizeof(*g), GFP_KERNEL);
+	/* Not devm: created after probe, freed by pru_sim_pinmux_detach() */
+	g = kzalloc(sizeof(*g), GFP_KERNEL);
 	if (!g)
 		return ERR_PTR(-ENOMEM);
 	g->npins = n / per;
-	g->name = devm_kasprintf(pm->dev, GFP_KERNEL, "%pOF", np);
-	g->pins = devm_kcalloc(pm->dev, g->npins, sizeof(*g->pins), GFP_KERNEL);
-	g->vals = devm_kcalloc(pm->dev, g->npins, sizeof(*g->vals), GFP_KERNEL);
-	if (!g->name || !g->pins || !g->vals)
+	g->name = kasprintf(GFP_KERNEL, "%pOF", np);
+	g->pins = kcalloc(g->npins, sizeof(*g->pins), GFP_KERNEL);
+	g->vals = kcalloc(g->npins, sizeof(*g->vals), GFP_KERNEL);
+	if (!g->name || !g->pins || !g->vals) {
+		pru_sim_group_free(g);
 		return ERR_PTR(-ENOMEM);
+	}
 	for (i = 0; i < g->npins; i++) {
 		u32 cell[3] = { };
 		unsigned int c;
@@ -268,6 +280,7 @@ static struct pru_sim_pingroup *pru_sim_group_create(struct pru_sim_pinmux *pm,
 						   &cell[c]);
 		if (cell[0] % 4 || cell[0] / 4 >= PRU_SIM_NUM_PADS) {
 			dev_err(pm->dev, "%pOF: no pad at offset 0x%x\n", np, cell[0]);
+			pru_sim_group_free(g);
 			return ERR_PTR(-EINVAL);
 		}
 		g->pins[i] = cell[0] / 4;
@@ -464,15 +477,15 @@ static void pru_sim_pinmux_detach(void *data)
 {
 	struct pru_sim_pinmux *pm = data;
 	struct pru_sim *sim = pm->sim;
-	struct pru_sim_pingroup *g;
+	struct pru_sim_pingroup *g, *next;
 
 	debugfs_remove(pm->debugfs);
 	mutex_lock(&sim->lock);
 	sim->pads_live = false;
 	pru_sim_pads_changed(sim);
 	mutex_unlock(&sim->lock);
-	list_for_each_entry(g, &pm->groups, node)
-		of_node_put(g->np);
+	list_for_each_entry_safe(g, next, &pm->groups, node)
+		pru_sim_group_free(g);
 }
 
 static int pru_sim_pinmux_probe(struct platform_device *pdev)
@@ -509,7 +522,14 @@ static int pru_sim_pinmux_probe(struct platform_device *pdev)
 	pm->desc.npins = PRU_SIM_NUM_PADS;
 	pm->desc.pctlops = &pru_sim_pinctrl_ops;
 	pm->desc.pmxops = &pru_sim_pinmux_ops;
-	pm->desc.owner = THIS_MODULE;
+	/*
+	 * No owner: the pinctrl core would take a module reference for every
+	 * pin held, and the pins are held by pru_sim's own cores, so the
+	 * module could never be removed.  The cores go before the controller
+	 * (pru_sim_depopulate()); a consumer outside pru_sim that holds pins
+	 * of the simulated board must be removed before pru_sim is.
+	 */
+	pm->desc.owner = NULL;
 
 	mutex_lock(&sim->lock);
 	for (i = 0; i < PRU_SIM_NUM_PADS; i++)
@@ -540,6 +560,8 @@ struct platform_driver pru_sim_pinmux_driver = {
 	.driver = {
 		.name = "pru_sim_pinmux",
 		.of_match_table = pru_sim_pinmux_of_match,
+		/* a consumer's pinctrl state must not outlive its controller */
+		.suppress_bind_attrs = true,
 	},
 };
 
@@ -679,5 +701,6 @@ struct platform_driver pru_sim_gpio_driver = {
 	.driver = {
 		.name = "pru_sim_gpio",
 		.of_match_table = pru_sim_gpio_of_match,
+		.suppress_bind_attrs = true,
 	},
 };

@@ -305,10 +305,27 @@ static void pru_sim_stop_thread(void *data)
 	kthread_stop(sim->thread);
 }
 
+static bool pru_sim_is_board(struct device *dev)
+{
+	return of_device_is_compatible(dev->of_node, "prukit,am33xx-pinmux-sim") ||
+	       of_device_is_compatible(dev->of_node, "prukit,am335x-gpio-sim");
+}
+
+static int pru_sim_destroy_users(struct device *dev, void *data)
+{
+	return pru_sim_is_board(dev) ? 0 : of_platform_device_destroy(dev, data);
+}
+
+/*
+ * The cores (which may hold pins through their own pinctrl state) go
+ * before the board's pin controller and GPIO chips, whatever their order
+ * in the tree: fdtoverlay, for one, reverses the children it adds.
+ */
 static void pru_sim_depopulate(void *data)
 {
 	struct pru_sim *sim = data;
 
+	device_for_each_child_reverse(sim->dev, NULL, pru_sim_destroy_users);
 	of_platform_depopulate(sim->dev);
 }
 
