@@ -28,7 +28,7 @@ UDEV_RULES_DIR ?= /etc/udev/rules.d
 BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
-.PHONY: all modules modules_install clean install firmware firmware_install \
+.PHONY: all modules modules_install clean install firmware firmware_install FORCE \
 	overlays overlays_install udev_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
@@ -37,8 +37,9 @@ modules:
 	$(MAKE) -C $(KDIR) M=$(CURDIR) modules
 
 # Into updates/, which depmod searches first: prukit's rpmsg_pru replaces
-# the one of TI's 5.10/6.1 kernels.
-modules_install:
+# the one of TI's 5.10/6.1 kernels.  Builds what it installs (kbuild's
+# modules_install only copies what a previous "make modules" left).
+modules_install: modules
 	$(MAKE) -C $(KDIR) M=$(CURDIR) INSTALL_MOD_DIR=updates \
 		$(if $(DESTDIR),INSTALL_MOD_PATH=$(DESTDIR)) modules_install
 
@@ -72,8 +73,30 @@ overlays_install:
 	install -d $(DESTDIR)$(FIRMWARE_DIR)
 	install -m 0644 $(BUILD)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
 
-udev_install:
-	install -D -m 0644 udev/60-prukit.rules $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
+# One file, 60-prukit.rules: udev/60-prukit.rules (what every prukit device
+# node shares) followed by each driver's drivers/<driver>/udev/*.rules.  One
+# file rather than one per driver, so that installing a newer prukit replaces
+# the rules of a driver it renamed or dropped instead of leaving them behind.
+UDEV_RULES := udev/60-prukit.rules $(sort $(wildcard drivers/*/udev/*.rules))
+
+# Generated on every run (it takes no time): a rules file removed since the
+# last run is gone from the result too, which modification times would miss.
+$(BUILD)/udev/60-prukit.rules: FORCE
+	@mkdir -p $(@D)
+	@echo "  GEN     $@"
+	@for f in $(UDEV_RULES); do \
+		case $$f in \
+		drivers/*) printf '\n# %s\n' "$$f"; \
+			sed '/^# SPDX-License-Identifier:/d' "$$f" ;; \
+		*) cat "$$f" ;; \
+		esac || exit 1; \
+	done >$@.tmp
+	@mv $@.tmp $@
+
+FORCE:
+
+udev_install: $(BUILD)/udev/60-prukit.rules
+	install -D -m 0644 $< $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
 
 install: modules_install firmware_install overlays_install udev_install
 

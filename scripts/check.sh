@@ -25,6 +25,16 @@ firmware_check() {
 	CROSS_COMPILE=$bin/pru- O="$PRUKIT_TOP/out/firmware" firmware/check.sh
 }
 
+# The harness checks itself: step() (selftest.sh), and that a driver's
+# folder is found by the builds, make install and the harnesses
+# (discovery.sh).
+harness_check() {
+	local rc=0
+	tests/harness/selftest.sh || rc=1
+	tests/harness/discovery.sh || rc=1
+	return $rc
+}
+
 prusim_check() {
 	make -s -C tools/prusim && tests/prusim/run.sh
 }
@@ -32,7 +42,7 @@ prusim_check() {
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
-step harness 12 tests/harness/selftest.sh		# [12]
+step harness 36 harness_check				# [12 + 26]
 step checkpatch 55 scripts/checkpatch.sh		# [60], one per C file
 step kernels 5 scripts/kernels.sh 5.10 6.1 6.12		# [6]
 step pru-rproc 2 scripts/pru-rproc-build.sh		# [2], pru_rproc_get() compiles
@@ -41,6 +51,16 @@ step overlays 121 scripts/overlays.sh --check		# [125]
 step dkms 7 scripts/dkms-test.sh			# [8]
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
+# Each driver's own checks, drivers/<driver>/tests/check.sh, with the
+# minimum its line "# prukit-check-min: N" declares (driver_checks,
+# scripts/lib.sh).  Read on fd 3: a step may read its standard input.
+while read -r name min path <&3; do
+	if [ "$min" = none ]; then
+		step "driver-$name" 1 echo "FAIL: $path declares no \"# prukit-check-min: N\" line"
+	else
+		step "driver-$name" "$min" "$path"
+	fi
+done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
 step vmtest 380 scripts/vm.sh test "5.10 6.1 6.12"	# [399], 3 kernels
 

@@ -39,3 +39,44 @@ need_pkgs() {
 }
 
 ncpus() { getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1; }
+
+# vm_cases [TOP] - the VM test cases, one "NAME PATH" line each, sorted by
+# name: the executable files in TOP/tests/vm/cases and in every driver's
+# TOP/drivers/<driver>/tests/vm/cases (TOP: PRUKIT_TOP).  The guest runs
+# them all in one boot, by name, from one directory (/prukit/tests), so two
+# cases with one name are an error: both are named on stderr, none is listed.
+vm_cases() {
+	local top=${1:-$PRUKIT_TOP} d
+	for d in "$top"/tests/vm/cases "$top"/drivers/*/tests/vm/cases; do
+		[ -d "$d" ] || continue
+		# Executables only: not __pycache__, data files and the like.
+		find "$d" -maxdepth 1 -type f -perm -u+x -printf '%f %p\n'
+	done | LC_ALL=C sort -k1,1 | awk '
+		{ n[$1]++; path[$1] = path[$1] " " $2; line[NR] = $0; name[NR] = $1 }
+		END {
+			for (k in n) if (n[k] > 1) { print "two VM tests named " k ":" path[k] > "/dev/stderr"; bad = 1 }
+			if (bad) exit 1
+			for (i = 1; i <= NR; i++) print line[i]
+		}'
+}
+
+# vm_host_half CASE_PATH - where the host half of a VM test case is (it may
+# not exist): beside its cases/ directory, in host/ under the same name.
+vm_host_half() {
+	local p=$1
+	echo "${p%/cases/*}/host/${p##*/}"
+}
+
+# driver_checks [TOP] - each driver's own make check step, one "NAME MIN
+# PATH" line each: TOP/drivers/<driver>/tests/check.sh, with MIN (the fewest
+# PASS:/FAIL: lines it must print, as step() takes it) from its line
+# "# prukit-check-min: N", or "none" when it declares none.
+driver_checks() {
+	local top=${1:-$PRUKIT_TOP} f d min
+	for f in "$top"/drivers/*/tests/check.sh; do
+		[ -f "$f" ] || continue
+		d=${f%/tests/check.sh}
+		min=$(sed -n 's/^# prukit-check-min: *\([0-9][0-9]*\) *$/\1/p' "$f" | head -n 1)
+		echo "${d##*/} ${min:-none} $f"
+	done
+}

@@ -125,9 +125,12 @@ make_initrd() {
 	cp "$PRUKIT_TOP"/out/firmware/*.elf "$stage/lib/firmware/prukit/"
 	install -m 0755 "$VMDIR/init" "$stage/init"
 	install -m 0755 "$VMDIR/run-tests" "$stage/prukit/run-tests"
-	for f in "$VMDIR"/cases/*; do
-		[ -f "$f" ] && install -m 0755 "$f" "$stage/prukit/tests/"
-	done
+	# Every case, tests/vm/cases and the drivers' own, side by side.
+	local all name path
+	all=$(vm_cases) || die "VM test names must be unique"
+	while read -r name path; do
+		[ -z "$name" ] || install -m 0755 "$path" "$stage/prukit/tests/$name"
+	done <<<"$all"
 	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
@@ -247,12 +250,13 @@ run)
 test)
 	kvers=${1:-5.10 6.1 6.12}
 	tests=${2:-}
+	# tests/vm/cases and every driver's drivers/<driver>/tests/vm/cases
+	# (scripts/lib.sh), all in the same boot.
+	cases=$(vm_cases) || die "VM test names must be unique"
 	if [ -z "$tests" ]; then
-		# Every executable file (not __pycache__ and the like).
-		tests=$(cd "$VMDIR/cases" 2>/dev/null &&
-			find . -maxdepth 1 -type f -perm -u+x -printf '%f\n' | sort | paste -sd' ' -)
+		tests=$(awk '{ print $1 }' <<<"$cases" | paste -sd' ' -)
 	fi
-	[ -n "$tests" ] || die "no VM tests in tests/vm/cases"
+	[ -n "$tests" ] || die "no VM tests in tests/vm/cases or drivers/*/tests/vm/cases"
 	total_p=0
 	total_f=0
 	for series in $kvers; do
@@ -266,12 +270,16 @@ test)
 		boot "$dir" "" "$dir/out" >"$res"
 		kernel_log_clean "$dir" "$dir/out" >>"$res"
 		set -e
-		# Host halves of tests, on what the guest brought back.
+		# Host halves of tests, on what the guest brought back: each beside
+		# its case's cases/ directory, in host/ (vm_host_half).
 		for t in $tests; do
-			[ -x "$VMDIR/host/$t" ] || continue
+			host=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
+			[ -n "$host" ] || continue
+			host=$(vm_host_half "$host")
+			[ -x "$host" ] || continue
 			if [ -d "$dir/out/$t" ]; then
 				hrc=0
-				"$VMDIR/host/$t" "$dir/out/$t" >>"$res" 2>&1 || hrc=$?
+				"$host" "$dir/out/$t" >>"$res" 2>&1 || hrc=$?
 				[ "$hrc" -eq 0 ] ||
 					echo "FAIL: $t: host half exited with status $hrc" >>"$res"
 			else

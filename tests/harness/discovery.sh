@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# Adding a driver touches one place: a copy of the tree (git ls-files) gets a
+# fake driver folder, drivers/zz_example/ (module and Kbuild gate, firmware,
+# udev rule, VM test with host half, make check step) plus its one line in
+# Kbuild, and this test asserts that the firmware build, make udev_install,
+# the VM harness's test discovery and make check's driver steps find it by
+# themselves, and that its Kbuild gate builds it only where the kernel has
+# the option it needs (one kbuild run against Debian's 6.12 armmp headers
+# with the option, one without).  It also checks that dkms.conf lists a
+# module only where the kernel has what its Kbuild gate needs, and that
+# dkms.conf and the drivers' Kbuild files agree.  Part of make check's
+# harness step; takes some 20 s.
+set -uo pipefail
+. "$(dirname "$0")/../../scripts/lib.sh"
+
+need_pkgs gcc-arm-linux-gnueabihf make
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+bad=0
+pass() { echo "PASS: discovery: $*"; }
+fail() { echo "FAIL: discovery: $*"; bad=1; }
+# check WHAT CMD... - one PASS:/FAIL: line for a condition.
+check() {
+	local what=$1
+	shift
+	if "$@"; then pass "$what"; else fail "$what"; fi
+}
+
+# --- the copy, and the fake driver ------------------------------------------
+
+src=$tmp/src
+mkdir -p "$src"
+(cd "$PRUKIT_TOP" && git ls-files -z --cached --others --exclude-standard |
+	while IFS= read -r -d '' f; do [ -e "$f" ] && printf '%s\0' "$f"; done |
+	xargs -0 cp --parents -t "$src") || { fail "copying the tree"; exit 1; }
+
+zz=$src/drivers/zz_example
+mkdir -p "$zz"/firmware/zz-test "$zz"/udev "$zz"/tests/vm/cases "$zz"/tests/vm/host
+# The gate as every driver writes it (Documentation/writing-a-driver.rst;
+# checked below), with two options: one every kernel has, one none has.
+gate_line='ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)'
+cat >"$zz/Kbuild" <<EOF
+# SPDX-License-Identifier: GPL-2.0-only
+prukit-needs := CONFIG_MODULES CONFIG_PRUKIT_ZZ_EXAMPLE_DEP
+$gate_line
+CONFIG_PRUKIT_ZZ_EXAMPLE ?= m
+endif
+obj-\$(CONFIG_PRUKIT_ZZ_EXAMPLE) += zz_example.o
+EOF
+cat >"$zz/zz_example.c" <<'EOF'
+// SPDX-License-Identifier: GPL-2.0-only
+#include <linux/module.h>
+MODULE_DESCRIPTION("prukit discovery self-test");
+MODULE_LICENSE("GPL");
+EOF
+echo 'obj-y += drivers/zz_example/' >>"$src/Kbuild"
+# The driver's firmware (drivers/<driver>/firmware/fw.mk, named after the
+# driver) and a test firmware in a subfolder (named after the folder).
+printf 'fw-srcs := zz.c\nfw-cores := 0\n' >"$zz/firmware/fw.mk"
+printf 'fw-srcs := zz.c\nfw-cores := 1\nfw-test := y\n' >"$zz/firmware/zz-test/fw.mk"
+echo 'SUBSYSTEM=="zz_example", GROUP="remoteproc", MODE="0660"' >"$zz/udev/zz_example.rules"
+printf '#!/bin/sh\necho "PASS: zz"\n' >"$zz/tests/vm/cases/50-zz-example"
+printf '#!/bin/sh\necho "PASS: zz host"\n' >"$zz/tests/vm/host/50-zz-example"
+printf '#!/bin/sh\n# prukit-check-min: 3\n' >"$zz/tests/check.sh"
+chmod +x "$zz"/tests/vm/cases/50-zz-example "$zz"/tests/vm/host/50-zz-example "$zz"/tests/check.sh
+
+# --- (a) the firmware build -------------------------------------------------
+
+fwmake() { make -s --no-print-directory -C "$src/firmware" O="$tmp/fw" "$@"; }
+list=$(fwmake list 2>&1) || fail "make -C firmware list: $list"
+install_list=$(fwmake list-install 2>&1) || fail "make -C firmware list-install: $install_list"
+check "firmware list has the driver's firmware/fw.mk as zz_example-pru0.elf" \
+	grep -qw 'zz_example-pru0\.elf' <<<"$list"
+check "firmware list has its firmware/zz-test/fw.mk as zz-test-pru1.elf" \
+	grep -qw 'zz-test-pru1\.elf' <<<"$list"
+check "firmware list still has firmware/rpmsg-echo" grep -qw 'rpmsg-echo-pru0\.elf' <<<"$list"
+check "make install's firmware (list-install) has zz_example-pru0.elf" \
+	grep -qF "$tmp/fw/zz_example-pru0.elf" <<<"$install_list"
+check "make install's firmware leaves out the test firmware zz-test (fw-test := y)" \
+	eval '! grep -qF zz-test <<<"$install_list"'
+check "the driver's firmware is compiled with -I drivers/zz_example (its protocol header)" \
+	eval 'fwmake print-cflags-zz_example-pru0 | grep -qF -- "-I$zz "'
+
+# --- (b) make udev_install --------------------------------------------------
+
+rules=$tmp/root/etc/udev/rules.d/60-prukit.rules
+if make -s -C "$src" udev_install DESTDIR="$tmp/root" >"$tmp/udev.log" 2>&1; then
+	check "make udev_install puts the driver's rule into 60-prukit.rules" \
+		grep -qxF 'SUBSYSTEM=="zz_example", GROUP="remoteproc", MODE="0660"' "$rules"
+	check "60-prukit.rules still has rpmsg_pru's rule" \
+		grep -qxF 'SUBSYSTEM=="rpmsg_pru", GROUP="remoteproc", MODE="0660"' "$rules"
+else
+	sed 's/^/    /' "$tmp/udev.log"
+	fail "make udev_install DESTDIR=..."
+fi
+
+# --- (c) the VM harness's test discovery (vm.sh test, make_initrd) ----------
+
+cases=$(vm_cases "$src") || fail "vm_cases"
+check "vm_cases lists the driver's VM test" \
+	grep -qxF "50-zz-example $zz/tests/vm/cases/50-zz-example" <<<"$cases"
+check "vm_cases still lists tests/vm/cases/10-boot" \
+	grep -qxF "10-boot $src/tests/vm/cases/10-boot" <<<"$cases"
+check "vm_cases lists them in name order" \
+	eval 'awk "{ print \$1 }" <<<"$cases" | LC_ALL=C sort -c'
+check "vm_host_half finds the driver's host half" \
+	test "$(vm_host_half "$zz/tests/vm/cases/50-zz-example")" = "$zz/tests/vm/host/50-zz-example"
+cp "$zz/tests/vm/cases/50-zz-example" "$src/tests/vm/cases/"
+check "vm_cases refuses two tests with one name" eval '! vm_cases "$src" >/dev/null 2>&1'
+rm "$src/tests/vm/cases/50-zz-example"
+
+# --- make check's per-driver steps -------------------------------------------
+
+check "driver_checks finds the driver's tests/check.sh with its minimum 3" \
+	grep -qxF "zz_example 3 $zz/tests/check.sh" <<<"$(driver_checks "$src")"
+
+# --- (d) the Kbuild gate, in a real kbuild run ------------------------------
+
+read -r _ kver kdir _ < <("$PRUKIT_TOP/scripts/fetch-kernels.sh" 6.12) ||
+	{ fail "no 6.12 kernel headers"; exit 1; }
+# The real drivers are switched off on the command line (which overrides
+# their gates' ?=): only the fake one is at stake, and the run is quick.
+off=()
+for f in "$PRUKIT_TOP"/drivers/*/Kbuild; do
+	while read -r v; do off+=("$v="); done < <(sed -n 's/^obj-\$(\(CONFIG_[A-Z0-9_]*\)).*/\1/p' "$f")
+done
+kmake() {
+	make -C "$kdir" M="$src" ARCH=arm CROSS_COMPILE=arm-linux-gnueabihf- \
+		"${off[@]}" -j"$(ncpus)" "$@" modules
+}
+if kmake >"$tmp/kbuild1.log" 2>&1; then
+	check "Kbuild gate: no zz_example.ko where the kernel lacks CONFIG_PRUKIT_ZZ_EXAMPLE_DEP ($kver)" \
+		test ! -e "$zz/zz_example.ko"
+else
+	tail -n 20 "$tmp/kbuild1.log"
+	fail "kbuild without CONFIG_PRUKIT_ZZ_EXAMPLE_DEP failed ($kver)"
+fi
+if kmake CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y >"$tmp/kbuild2.log" 2>&1; then
+	check "Kbuild gate: zz_example.ko built where the kernel has it ($kver, through the top Kbuild's line)" \
+		test -e "$zz/zz_example.ko"
+else
+	tail -n 20 "$tmp/kbuild2.log"
+	fail "kbuild with CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y failed ($kver)"
+fi
+
+# --- dkms.conf against the kernel's .config and the Kbuild gates -------------
+
+# dkms_list CONFIG_LINES - source dkms.conf as dkms does (bash, with
+# kernel_source_dir set) against a .config holding CONFIG_LINES; print
+# "NAME LOCATION DEST" per listed module, in index order.
+dkms_list() {
+	mkdir -p "$tmp/k"
+	printf '%s\n' "$@" >"$tmp/k/.config"
+	(kernel_source_dir=$tmp/k
+	 . "$PRUKIT_TOP/dkms.conf" >/dev/null
+	 for ((i = 0; i < ${#BUILT_MODULE_NAME[@]}; i++)); do
+		echo "${BUILT_MODULE_NAME[$i]} ${BUILT_MODULE_LOCATION[$i]} ${DEST_MODULE_LOCATION[$i]}"
+	 done)
+}
+all_opts=(CONFIG_REMOTEPROC=y CONFIG_OF=y CONFIG_PINCTRL=y CONFIG_GPIOLIB=y CONFIG_RPMSG=m)
+full=$(dkms_list "${all_opts[@]}")
+no_rpmsg=$(dkms_list "${all_opts[@]:0:4}")
+check "dkms.conf lists rpmsg_pru where the kernel has CONFIG_RPMSG" \
+	grep -qx 'rpmsg_pru drivers/rpmsg_pru/ /updates/dkms' <<<"$full"
+check "dkms.conf leaves rpmsg_pru out where the kernel lacks CONFIG_RPMSG, the rest listed" \
+	test "$(grep -v '^rpmsg_pru ' <<<"$full")" = "$no_rpmsg"
+check "dkms.conf's list has no gap or misaligned entry without CONFIG_RPMSG" \
+	eval '! grep -qvE "^[a-z_]+ drivers/[a-z_]+/ /updates/dkms$" <<<"$no_rpmsg"'
+
+# Every driver of the top Kbuild has a dkms.conf block needing what its
+# Kbuild gate needs, and dkms.conf lists no other.
+kb_drivers=$(sed -n 's|^obj-y += \(drivers/[a-z0-9_]*/\)$|\1|p' "$PRUKIT_TOP/Kbuild" | sort)
+dk_drivers=$(sed -n 's/^BUILT_MODULE_LOCATION\[[0-9]*\]="\(.*\)"/\1/p' "$PRUKIT_TOP/dkms.conf" | sort)
+check "dkms.conf has one module per driver in Kbuild ($(echo $kb_drivers))" \
+	test -n "$kb_drivers" -a "$kb_drivers" = "$dk_drivers"
+for d in $kb_drivers; do
+	gate=$(sed -n 's/^prukit-needs := //p' "$PRUKIT_TOP/$d/Kbuild")
+	i=$(sed -n "s|^BUILT_MODULE_LOCATION\[\([0-9]*\)\]=\"$d\"|\1|p" "$PRUKIT_TOP/dkms.conf")
+	needs=$(sed -n "s/^PRUKIT_NEEDS\[$i\]=\"\(.*\)\"/\1/p" "$PRUKIT_TOP/dkms.conf")
+	check "$d: dkms.conf needs what its Kbuild gate needs (${gate:-nothing})" \
+		test -n "$gate" -a "$gate" = "$needs"
+	check "$d: its Kbuild gate is the one tested here" grep -qxF "$gate_line" "$PRUKIT_TOP/$d/Kbuild"
+done
+exit "$bad"
