@@ -47,7 +47,7 @@ step checkpatch 55 scripts/checkpatch.sh		# [60], one per C file
 step kernels 5 scripts/kernels.sh 5.10 6.1 6.12		# [6]
 step pru-rproc 2 scripts/pru-rproc-build.sh		# [2], pru_rproc_get() compiles
 step firmware 90 firmware_check				# [96], grows with the images
-step overlays 121 scripts/overlays.sh --check		# [125]
+step overlays 123 scripts/overlays.sh --check		# [127]
 step dkms 7 scripts/dkms-test.sh			# [8]
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]

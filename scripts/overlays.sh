@@ -665,6 +665,60 @@ for s in $SERIES; do
 	fi
 done
 
+# pru_sim's own table of PRU outputs and their pads (which R30 bits reach
+# the simulated board's pins, drivers/pru_sim/pru_sim_board.c) must say what
+# the pin table says: the same (core, bit, pad, mode) for every R30 signal.
+# pin_table_vs_sim TSV C: prints the differences, exits non-zero if any.
+pin_table_vs_sim() {
+	python3 - "$1" "$2" <<'PY'
+import re, sys
+tsv, src = sys.argv[1], sys.argv[2]
+want = set()
+for line in open(tsv):
+    if line.startswith("#") or not line.strip():
+        continue
+    f = line.rstrip("\n").split("\t")
+    m = re.fullmatch(r"pru([01])_r30_(\d+)", f[5])
+    if m:
+        want.add((int(m[1]), int(m[2]), int(f[1], 16), int(f[4])))
+text = open(src).read()
+m = re.search(r"pru_sim_r30_pads\[PRUSIM_NUM_CORES\]\[32\] = \{(.*?)\n\};", text, re.S)
+if not m:
+    sys.exit("no pru_sim_r30_pads[][] table in " + src)
+body = re.sub(r"/\*.*?\*/", "", m[1], flags=re.S)
+have = set()
+for core, block in re.findall(r"\[([01])\] = \{(.*?)\n\t\}", body, re.S):
+    bit = 0
+    for d, off, mode in re.findall(r"(?:\[(\d+)\] = )?\{ (0x[0-9a-f]+), (\d) \}", block):
+        bit = int(d) if d else bit
+        have.add((int(core), bit, int(off, 16), int(mode)))
+        bit += 1
+for t in sorted(want - have):
+    print("pin table has pru%d_r30_%d on pad 0x%x mode %d; pru_sim does not" % t)
+for t in sorted(have - want):
+    print("pru_sim has pru%d_r30_%d on pad 0x%x mode %d; the pin table does not" % t)
+print("%d R30 signals" % len(want & have))
+sys.exit(1 if want != have or not want else 0)
+PY
+}
+SIM_PADS=$PRUKIT_TOP/drivers/pru_sim/pru_sim_board.c
+if pin_table_vs_sim "$PIN_TABLE" "$SIM_PADS" >"$WORK/pins/sim" 2>&1; then
+	pass "pin table and pru_sim's R30 pads agree ($(tail -n 1 "$WORK/pins/sim"))"
+else
+	fail "pin table and pru_sim's R30 pads (${SIM_PADS#"$PRUKIT_TOP"/}) differ:"
+	show "$WORK/pins/sim" 20
+fi
+# ... and that comparison can fail: pru_sim's table with one pad changed.
+sed 's/{ 0x994, 5 }/{ 0x998, 5 }/' "$SIM_PADS" >"$WORK/pins/sim-bad.c"
+if ! cmp -s "$SIM_PADS" "$WORK/pins/sim-bad.c" &&
+	! pin_table_vs_sim "$PIN_TABLE" "$WORK/pins/sim-bad.c" >"$WORK/pins/sim-bad" 2>&1 &&
+	grep -q "pru0_r30_1 on pad 0x994 mode 5; pru_sim does not" "$WORK/pins/sim-bad"; then
+	pass "self-test: a pru_sim table with P9_29's pad changed is caught"
+else
+	fail "self-test: a pru_sim table with P9_29's pad changed is not caught:"
+	show "$WORK/pins/sim-bad" 5
+fi
+
 # The pin check of each overlay's blob (the same for every series).
 for o in "${overlays[@]}"; do
 	[ "${OVL_OK[$o]}" = 1 ] || continue
