@@ -66,10 +66,8 @@ firmware_install: firmware
 overlays:
 	$(SCRIPTS)/overlays.sh --build
 
-# The blobs "make overlays" built.
-overlays_install:
-	@ls $(BUILD)/overlays/*.dtbo >/dev/null 2>&1 || \
-		{ echo "no overlays in $(BUILD)/overlays: run make overlays first"; exit 1; }
+# Builds what it installs, as firmware_install does.
+overlays_install: overlays
 	install -d $(DESTDIR)$(FIRMWARE_DIR)
 	install -m 0644 $(BUILD)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
 
