@@ -531,6 +531,7 @@ void prusim_memory_written(struct prusim *s);
 void prusim_yield(struct prusim *s);
 void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value);
 u32 prusim_gpio_read(struct prusim *s, unsigned int bank, u32 reg);
+int prusim_gpio_bank(u32 addr);
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */
 void prusim_raise_event(struct prusim *s, unsigned int event);

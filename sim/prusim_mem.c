@@ -767,7 +767,13 @@ static void region_write(struct prusim *s, const struct prusim_region *r, const 
 /* ---------------------------------------------------------------------- */
 /* OCP master port                                                         */
 
-static int gpio_bank(u32 addr)
+/**
+ * prusim_gpio_bank() - which GPIO bank an address belongs to
+ * @addr: an AM335x (OCP) address
+ *
+ * Return: the bank 0..3 whose register window holds @addr, or -1.
+ */
+int prusim_gpio_bank(u32 addr)
 {
 	int bank;
 
@@ -900,7 +906,7 @@ static int ocp_route(struct prusim *s, struct prusim_core *c, u32 *addr, u32 len
 	if ((s->cfg_regs[PRUSIM_CFG_REG(PRUSIM_CFG_PMAO)] >> c->index) & 1)
 		*addr -= PRUSIM_OCP_BASE;
 	acc->volatile_data = true;
-	bank = gpio_bank(*addr);
+	bank = prusim_gpio_bank(*addr);
 	if (bank >= 0 && *addr - prusim_gpio_base[bank] + len > GPIO_WINDOW) {
 		prusim_stop(s, c, "access at 0x%08x+%u crosses the end of GPIO bank %d",
 			    *addr, len, bank);

@@ -568,10 +568,6 @@ struct platform_driver pru_sim_pinmux_driver = {
 /* ------------------------------------------------------------------ */
 /* GPIO banks                                                          */
 
-static const u32 pru_sim_gpio_base[PRUSIM_GPIO_BANKS] = {
-	0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
-};
-
 /**
  * struct pru_sim_gpio - one GPIO bank as a Linux GPIO chip
  * @chip: the chip
@@ -659,6 +655,7 @@ static int pru_sim_gpio_probe(struct platform_device *pdev)
 	struct device *dev = &pdev->dev;
 	struct pru_sim *sim = dev_get_drvdata(dev->parent);
 	struct pru_sim_gpio *g;
+	int bank;
 	u32 base;
 
 	if (!sim)
@@ -668,11 +665,10 @@ static int pru_sim_gpio_probe(struct platform_device *pdev)
 		return -ENOMEM;
 	if (of_property_read_u32(dev->of_node, "reg", &base))
 		return dev_err_probe(dev, -EINVAL, "no reg\n");
-	for (g->bank = 0; g->bank < PRUSIM_GPIO_BANKS; g->bank++)
-		if (pru_sim_gpio_base[g->bank] == base)
-			break;
-	if (g->bank == PRUSIM_GPIO_BANKS)
+	bank = prusim_gpio_bank(base);
+	if (bank < 0 || base & 0xfff)
 		return dev_err_probe(dev, -EINVAL, "0x%08x is not an AM335x GPIO bank\n", base);
+	g->bank = bank;
 	g->sim = sim;
 	g->chip.label = devm_kasprintf(dev, GFP_KERNEL, "gpio%u", g->bank);
 	if (!g->chip.label)
