@@ -44,7 +44,7 @@ else
 fi
 
 # Every module dkms.conf names was built, for the right kernel.
-names=$(sed -n 's/^BUILT_MODULE_NAME\[[0-9]*\]="\(.*\)"/\1/p' "$src/dkms.conf")
+names=$(kernel_source_dir=$kdir; . "$src/dkms.conf" >/dev/null; echo "${BUILT_MODULE_NAME[*]}")
 [ -n "$names" ] || { echo "FAIL: dkms.conf names no module"; exit 1; }
 for name in $names; do
 	ko=$(find "$work/tree/prukit/$ver/$kver" -name "$name.ko*" | head -n 1)

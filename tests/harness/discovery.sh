@@ -165,22 +165,31 @@ no_rpmsg=$(dkms_list "${all_opts[@]:0:4}")
 check "dkms.conf lists rpmsg_pru where the kernel has CONFIG_RPMSG" \
 	grep -qx 'rpmsg_pru drivers/rpmsg_pru/ /updates/dkms' <<<"$full"
 check "dkms.conf leaves rpmsg_pru out where the kernel lacks CONFIG_RPMSG, the rest listed" \
-	test "$(grep -v '^rpmsg_pru ' <<<"$full")" = "$no_rpmsg"
+	test -n "$no_rpmsg" -a "$(grep -v '^rpmsg_pru ' <<<"$full")" = "$no_rpmsg"
 check "dkms.conf's list has no gap or misaligned entry without CONFIG_RPMSG" \
 	eval '! grep -qvE "^[a-z_]+ drivers/[a-z_]+/ /updates/dkms$" <<<"$no_rpmsg"'
 
-# Every driver of the top Kbuild has a dkms.conf block needing what its
-# Kbuild gate needs, and dkms.conf lists no other.
-kb_drivers=$(sed -n 's|^obj-y += \(drivers/[a-z0-9_]*/\)$|\1|p' "$PRUKIT_TOP/Kbuild" | sort)
-dk_drivers=$(sed -n 's/^BUILT_MODULE_LOCATION\[[0-9]*\]="\(.*\)"/\1/p' "$PRUKIT_TOP/dkms.conf" | sort)
-check "dkms.conf has one module per driver in Kbuild ($(echo $kb_drivers))" \
+# Every driver of the top Kbuild has its one dkms.conf line, and dkms.conf
+# lists no other; the options it drops a module for are the module's own
+# Kbuild gate (the zz_example copy: listed with the option, dropped without).
+kb_drivers=$(sed -n 's|^obj-y += drivers/\([a-z0-9_]*\)/$|\1|p' "$PRUKIT_TOP/Kbuild" | sort)
+dk_drivers=$(sed -n 's/^prukit_module \([a-z0-9_]*\)\([[:space:]].*\)\?$/\1/p' "$PRUKIT_TOP/dkms.conf" | sort)
+check "dkms.conf has one line per driver in Kbuild ($(echo $kb_drivers))" \
 	test -n "$kb_drivers" -a "$kb_drivers" = "$dk_drivers"
 for d in $kb_drivers; do
-	gate=$(sed -n 's/^prukit-needs := //p' "$PRUKIT_TOP/$d/Kbuild")
-	i=$(sed -n "s|^BUILT_MODULE_LOCATION\[\([0-9]*\)\]=\"$d\"|\1|p" "$PRUKIT_TOP/dkms.conf")
-	needs=$(sed -n "s/^PRUKIT_NEEDS\[$i\]=\"\(.*\)\"/\1/p" "$PRUKIT_TOP/dkms.conf")
-	check "$d: dkms.conf needs what its Kbuild gate needs (${gate:-nothing})" \
-		test -n "$gate" -a "$gate" = "$needs"
-	check "$d: its Kbuild gate is the one tested here" grep -qxF "$gate_line" "$PRUKIT_TOP/$d/Kbuild"
+	check "drivers/$d/: its Kbuild gate is the one tested here" \
+		grep -qxF "$gate_line" "$PRUKIT_TOP/drivers/$d/Kbuild"
 done
+zz_list() {
+	mkdir -p "$tmp/k"
+	printf '%s\n' "$@" >"$tmp/k/.config"
+	(kernel_source_dir=$tmp/k
+	 . "$src/dkms.conf" >/dev/null
+	 echo "${BUILT_MODULE_NAME[*]}")
+}
+sed 's/^prukit_modules_end$/prukit_module zz_example\n&/' "$PRUKIT_TOP/dkms.conf" >"$src/dkms.conf"
+check "dkms.conf lists a new driver's module where the kernel has its gate's option" \
+	eval 'zz_list "${all_opts[@]}" CONFIG_MODULES=y CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y | grep -qw zz_example'
+check "dkms.conf drops a new driver's module where the kernel lacks its gate's option" \
+	eval 'zz_list "${all_opts[@]}" CONFIG_MODULES=y | grep -qx "prukit_pru pru_sim rpmsg_pru"'
 exit "$bad"
