@@ -15,7 +15,11 @@
 #include "prukit/pru_ctrl.h"
 
 struct device;
+struct device_node;
 struct rproc;
+
+/* AM335x GPIO banks a PRU can drive over OCP (prukit_pru_gpio_bank()) */
+#define PRUKIT_PRU_GPIO_BANKS		4
 
 /* Default for firmware answers: generous, because pru_sim runs slower. */
 #define PRUKIT_PRU_TIMEOUT_MS		5000
@@ -54,6 +58,9 @@ int prukit_pru_ctrl_wait_ready(struct prukit_pru *pru, void __iomem *ctrl,
 			       unsigned int timeout_ms);
 int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode,
 			    unsigned int timeout_ms);
+int prukit_pru_ctrl_post(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode);
+int prukit_pru_ctrl_answer(void __iomem *ctrl, u16 seq);
+int prukit_pru_gpio_bank(struct device_node *np);
 int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 				irq_handler_t handler, irq_handler_t thread_fn,
 				unsigned long flags, void *data);

@@ -31,6 +31,7 @@
 #include <linux/module.h>
 #include <linux/mutex.h>
 #include <linux/of.h>
+#include <linux/of_address.h>
 #include <linux/of_irq.h>
 #include <linux/of_platform.h>
 #include <linux/platform_device.h>
@@ -435,6 +436,91 @@ int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opco
 	return PRUKIT_CTRL_RESULT(status);
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_command);
+
+/**
+ * prukit_pru_ctrl_post() - send a command without waiting for its answer
+ * @pru: the core
+ * @ctrl: the control block; the command's parameters are already written
+ * @opcode: the driver protocol's command
+ *
+ * For firmware that takes commands only at certain points (between two
+ * frames, say): the caller learns the answer later with
+ * prukit_pru_ctrl_answer() on the returned sequence number, typically when
+ * the firmware's event arrives.  A command posted before the previous one
+ * was answered replaces it; callers serialise commands and post the next one
+ * only once the previous one was answered.
+ *
+ * Return: the command's sequence number (1..65535), or -EPIPE if the core
+ * does not run the driver's firmware.
+ */
+int prukit_pru_ctrl_post(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode)
+{
+	if (!prukit_pru_running(pru))
+		return -EPIPE;
+	pru->seq = pru->seq == U16_MAX ? 1 : pru->seq + 1;
+	writel(PRUKIT_CTRL_CMD(opcode, pru->seq),
+	       ctrl + offsetof(struct prukit_ctrl_hdr, command));
+	return pru->seq;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_post);
+
+/**
+ * prukit_pru_ctrl_answer() - the answer to a posted command, if it came
+ * @ctrl: the control block
+ * @seq: the sequence number prukit_pru_ctrl_post() returned
+ *
+ * Return: the firmware's result (0 for success, positive: the protocol's
+ * error codes) once it answered @seq, else -EAGAIN.
+ */
+int prukit_pru_ctrl_answer(void __iomem *ctrl, u16 seq)
+{
+	u32 status = readl(ctrl + offsetof(struct prukit_ctrl_hdr, status));
+
+	if (!(status & PRUKIT_CTRL_READY) || PRUKIT_CTRL_SEQ(status) != seq)
+		return -EAGAIN;
+	return PRUKIT_CTRL_RESULT(status);
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_answer);
+
+/* The AM335x GPIO banks, as the PRU reaches them over OCP */
+static const u32 prukit_pru_gpio_banks[PRUKIT_PRU_GPIO_BANKS] = {
+	0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000,
+};
+
+/**
+ * prukit_pru_gpio_bank() - which AM335x GPIO bank a GPIO controller is
+ * @np: the controller's node (a "gpios" phandle's target)
+ *
+ * For firmware that drives GPIO pins itself, through the bank's
+ * SETDATAOUT/CLEARDATAOUT registers: the driver owns the pins through
+ * gpiolib and tells the firmware the bank.  On a board the bank is the
+ * controller's translated address; pru_sim's simulated banks
+ * ("prukit,am335x-gpio-sim") carry their AM335x address in "reg" without a
+ * translation to CPU addresses (the simulated board is not on the CPU's
+ * bus).
+ *
+ * Return: the bank, 0..3, or -EINVAL if @np is no AM335x GPIO bank.
+ */
+int prukit_pru_gpio_bank(struct device_node *np)
+{
+	struct resource res;
+	u64 addr = OF_BAD_ADDR;
+	const __be32 *reg;
+	unsigned int b;
+
+	if (of_device_is_compatible(np, "prukit,am335x-gpio-sim")) {
+		reg = of_get_address(np, 0, NULL, NULL);
+		if (reg)
+			addr = of_read_number(reg, of_n_addr_cells(np));
+	} else if (!of_address_to_resource(np, 0, &res)) {
+		addr = res.start;
+	}
+	for (b = 0; b < PRUKIT_PRU_GPIO_BANKS; b++)
+		if (addr == prukit_pru_gpio_banks[b])
+			return b;
+	return -EINVAL;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_gpio_bank);
 
 /**
  * devm_prukit_pru_request_irq() - request a PRU -> ARM event of the node
