@@ -24,6 +24,7 @@
 #define DEFAULT_MAX_CYCLES	1000000000ull
 #define MAX_EVENTS		64
 #define MAX_HOST_IRQS		4096
+#define MAX_MEM_OPS		16
 
 #define EXIT_USAGE		1
 #define EXIT_NO_HALT		2
@@ -37,6 +38,21 @@
 struct kick {
 	uint64_t cycle;
 	unsigned int event;
+};
+
+/**
+ * struct mem_op - a --load or --dump of memory
+ * @core: the core whose local map @addr is in (-1: the first one loaded)
+ * @addr: local address of the core's data memories, or a DDR bus address
+ *	(0x80000000.., with --ddr)
+ * @len: bytes to dump (--dump; a load takes the file's size)
+ * @path: file read (--load) or written (--dump)
+ */
+struct mem_op {
+	int core;
+	uint32_t addr;
+	uint32_t len;
+	const char *path;
 };
 
 /**
@@ -143,6 +159,95 @@ static int on_ocp_write(void *ctx, u32 addr, const void *buf, unsigned int len)
 		return -EFAULT;
 	memcpy(p, buf, len);
 	return 0;
+}
+
+/*
+ * Host pointer to @len bytes at @addr as core @core sees its data memories
+ * (own and other data RAM, shared RAM), or in DDR; NULL if they are not all
+ * in one of those memories.
+ */
+static uint8_t *mem_at(struct tool *t, unsigned int core, uint32_t addr, uint32_t len)
+{
+	if (addr >= DDR_BASE)
+		return ddr_at(t, addr, len);
+	return prusim_da_to_va(t->sim, core, addr, len);
+}
+
+/* [pruN:]ADDR:FILE (--load) or [pruN:]ADDR:LEN:FILE (--dump) */
+static int parse_mem_op(const char *arg, bool with_len, struct mem_op *op)
+{
+	uint64_t addr, len = 0;
+	char *end;
+
+	op->core = -1;
+	if (!strncmp(arg, "pru", 3) && (arg[3] == '0' || arg[3] == '1') && arg[4] == ':') {
+		op->core = arg[3] - '0';
+		arg += 5;
+	}
+	errno = 0;
+	addr = strtoull(arg, &end, 0);
+	if (errno || end == arg || *end != ':' || addr > UINT32_MAX)
+		return -EINVAL;
+	arg = end + 1;
+	if (with_len) {
+		len = strtoull(arg, &end, 0);
+		if (errno || end == arg || *end != ':' || !len || len > UINT32_MAX)
+			return -EINVAL;
+		arg = end + 1;
+	}
+	if (!*arg)
+		return -EINVAL;
+	op->addr = addr;
+	op->len = len;
+	op->path = arg;
+	return 0;
+}
+
+/* --load: copy a file into memory before the run */
+static int mem_load(struct tool *t, const struct mem_op *op, unsigned int core)
+{
+	size_t size = 0;
+	uint8_t *img = read_file(op->path, &size), *p;
+
+	if (!img) {
+		fprintf(stderr, "prusim: %s: %s\n", op->path, strerror(errno));
+		return -1;
+	}
+	p = size > UINT32_MAX ? NULL : mem_at(t, core, op->addr, size);
+	if (!p) {
+		fprintf(stderr, "prusim: --load %s: %zu bytes at 0x%08x: %s of PRU%u%s\n",
+			op->path, size, op->addr, "not in one memory", core,
+			op->addr >= DDR_BASE ? " (see --ddr)" : "");
+		free(img);
+		return -1;
+	}
+	memcpy(p, img, size);
+	free(img);
+	prusim_memory_written(t->sim);
+	return 0;
+}
+
+/* --dump: write memory to a file after the run */
+static int mem_dump(struct tool *t, const struct mem_op *op, unsigned int core)
+{
+	const uint8_t *p = mem_at(t, core, op->addr, op->len);
+	FILE *f;
+	int ret = 0;
+
+	if (!p) {
+		fprintf(stderr, "prusim: --dump %s: %u bytes at 0x%08x: %s of PRU%u%s\n",
+			op->path, op->len, op->addr, "not in one memory", core,
+			op->addr >= DDR_BASE ? " (see --ddr)" : "");
+		return -1;
+	}
+	f = fopen(op->path, "wb");
+	if (!f || fwrite(p, 1, op->len, f) != op->len)
+		ret = -1;
+	if (f && fclose(f))
+		ret = -1;
+	if (ret)
+		fprintf(stderr, "prusim: %s: cannot write\n", op->path);
+	return ret;
 }
 
 static void on_trace(void __always_unused *ctx, u64 cycle, unsigned int core, u32 pc, u32 insn)
@@ -353,6 +458,7 @@ static void print_usage(void)
 		"usage: prusim [--pru0 FW.elf] [--pru1 FW.elf] [--max-cycles N] [--until-halt]\n"
 		"              [--r31-0 FILE] [--r31-1 FILE] [--gpio-in BANK:FILE]\n"
 		"              [--ddr SIZE] [--event CYCLE:EVENT]... [-C NAME=VALUE]...\n"
+		"              [--load [pruN:]ADDR:FILE]... [--dump [pruN:]ADDR:LEN:FILE]...\n"
 		"              [--vcd FILE] [--events FILE] [--trace-out FILE]\n"
 		"              [--no-skip] [--trace] [--json]\n"
 		"       prusim --trace-in TRACE [--vcd FILE] [--events FILE]\n");
@@ -447,6 +553,8 @@ int main(int argc, char **argv)
 		{ "trace", no_argument, NULL, 't' },
 		{ "json", no_argument, NULL, 'j' },
 		{ "disasm", required_argument, NULL, 'D' },
+		{ "load", required_argument, NULL, 'L' },
+		{ "dump", required_argument, NULL, 'P' },
 		{ NULL, 0, NULL, 0 },
 	};
 	static struct tool t;
@@ -459,6 +567,8 @@ int main(int argc, char **argv)
 	};
 	const char *fw[PRUSIM_NUM_CORES] = { NULL, NULL };
 	struct kick kicks[MAX_EVENTS];
+	struct mem_op loads[MAX_MEM_OPS], dumps[MAX_MEM_OPS];
+	unsigned int nloads = 0, ndumps = 0, mem_core;
 	unsigned int nkicks = 0, i;
 	uint64_t max_cycles = DEFAULT_MAX_CYCLES;
 	bool until_halt = false, json = false, run_only = false;
@@ -532,6 +642,14 @@ int main(int argc, char **argv)
 			break;
 		case 'D':
 			return disasm_elf(optarg);
+		case 'L':
+			if (nloads == MAX_MEM_OPS || parse_mem_op(optarg, false, &loads[nloads++]))
+				goto bad;
+			break;
+		case 'P':
+			if (ndumps == MAX_MEM_OPS || parse_mem_op(optarg, true, &dumps[ndumps++]))
+				goto bad;
+			break;
 		default:
 			goto bad;
 		}
@@ -570,6 +688,14 @@ int main(int argc, char **argv)
 		if (fw[i] && load_firmware(t.sim, i, fw[i]))
 			return EXIT_USAGE;
 	}
+	/* what the host put in memory before starting the cores */
+	mem_core = fw[0] ? 0 : 1;
+	for (i = 0; i < nloads; i++) {
+		int core = loads[i].core < 0 ? (int)mem_core : loads[i].core;
+
+		if (mem_load(&t, &loads[i], core))
+			return EXIT_USAGE;
+	}
 	qsort(kicks, nkicks, sizeof(kicks[0]), compare_kicks);
 	run(&t, kicks, nkicks, max_cycles);
 
@@ -594,6 +720,12 @@ int main(int argc, char **argv)
 	t.log.end = t.sim->now;
 	if (write_outputs(&t))
 		ret = EXIT_USAGE;
+	for (i = 0; i < ndumps; i++) {
+		int core = dumps[i].core < 0 ? (int)mem_core : dumps[i].core;
+
+		if (mem_dump(&t, &dumps[i], core))
+			ret = EXIT_USAGE;
+	}
 	if (json)
 		print_json(&t);
 	for (i = 0; i < PRUSIM_NUM_PORTS; i++)
