@@ -5,7 +5,7 @@
 # The module list lives in Kbuild; this file drives kbuild and everything
 # else.  Entry points (stable names):
 #   make / make modules   modules against KDIR (default: the running kernel)
-#   make install          modules, PRU firmware, overlays, udev rule
+#   make install          modules, PRU firmware, overlays, udev rule, uapi headers
 #   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse)
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
 #   make overlays         device-tree overlays (out/overlays/*.dtbo), build only;
@@ -24,12 +24,13 @@ KDIR ?= /lib/modules/$(shell uname -r)/build
 DESTDIR ?=
 FIRMWARE_DIR ?= /lib/firmware
 UDEV_RULES_DIR ?= /etc/udev/rules.d
+INCLUDE_DIR ?= /usr/include
 
 BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
+	overlays overlays_install udev_install headers_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
 
@@ -96,7 +97,12 @@ FORCE:
 udev_install: $(BUILD)/udev/60-prukit.rules
 	install -D -m 0644 $< $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
 
-install: modules_install firmware_install overlays_install udev_install
+# The drivers' ioctl headers, for programs: #include <prukit/ws281x.h>
+headers_install:
+	install -d $(DESTDIR)$(INCLUDE_DIR)/prukit
+	install -m 0644 $(CURDIR)/include/uapi/prukit/*.h $(DESTDIR)$(INCLUDE_DIR)/prukit/
+
+install: modules_install firmware_install overlays_install udev_install headers_install
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh

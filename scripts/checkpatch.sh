@@ -26,7 +26,7 @@ cd "$PRUKIT_TOP"
 while IFS= read -r f; do
 	case $f in
 	include/compat.h) ignore=(--ignore LINUX_VERSION_CODE,CONSTANT_COMPARISON,DEPRECATED_API) ;;
-	firmware/* | tools/* | tests/prusim/*)
+	firmware/* | drivers/*/firmware/* | tools/* | tests/prusim/*)
 		ignore=(--ignore PREFER_KERNEL_TYPES,BIT_MACRO,PREFER_DEFINED_ATTRIBUTE_MACRO,VOLATILE) ;;
 	sim/prusim_platform.h)
 		# Its userspace half defines what <linux/compiler.h> would.

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# drivers/ws281x/tests/check.sh - make check's step driver-ws281x: the
+# ws281x firmware (ws281x-pru0.elf, ws281x-pru1.elf) run in the prusim host
+# tool, its edges checked to the cycle and one capture decoded by sigrok's
+# rgb_led_ws281x (ws281x_sim.py says what is checked).  Builds what it needs
+# (prusim, the PRU toolchain, the two images) from a clean clone.  Prints
+# PASS:/FAIL: lines, and info: lines with the worst edge error per pin kind
+# and the cycles per frame; exits non-zero on any failure.
+#
+# prukit-check-min: 40
+set -uo pipefail
+# shellcheck source=../../../scripts/lib.sh
+. "$(dirname "$0")/../../../scripts/lib.sh"
+cd "$PRUKIT_TOP" || exit 1
+
+command -v sigrok-cli >/dev/null || need_pkgs sigrok-cli
+command -v python3 >/dev/null || need_pkgs python3
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/prukit-ws281x.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+if ! make -s -C "$PRUKIT_TOP" tools >"$work/tools.log" 2>&1; then
+	tail -n 20 "$work/tools.log"
+	echo "FAIL: make tools (out/tools/prusim)"
+	exit 1
+fi
+bin=$(scripts/pru-toolchain.sh) || { echo "FAIL: scripts/pru-toolchain.sh"; exit 1; }
+# Only the two images, in a directory of their own: nothing else in out/ moves.
+fw=$work/fw
+if ! make -s --no-print-directory -C firmware CROSS_COMPILE="$bin/pru-" O="$fw" \
+	"$fw/ws281x-pru0.elf" "$fw/ws281x-pru1.elf" >"$work/fw.log" 2>&1; then
+	tail -n 20 "$work/fw.log"
+	echo "FAIL: building ws281x-pru0.elf and ws281x-pru1.elf"
+	exit 1
+fi
+grep '^ *FW ' "$work/fw.log" | sed 's/^ */info: /'
+
+# The uapi header builds in a user program, and its ioctl number is the one
+# the VM test (tests/vm/cases/78-ws281x) and Documentation/ws281x.rst use.
+printf '%s\n' '#include <stdio.h>' '#include <prukit/ws281x.h>' \
+	'int main(void) { printf("0x%x\n", (unsigned int)WS281X_IOC_COMMIT); return 0; }' \
+	>"$work/uapi.c"
+uapi_rc=1
+if cc -Wall -Werror -I include/uapi -o "$work/uapi" "$work/uapi.c" 2>"$work/uapi.log" &&
+   [ "$("$work/uapi")" = 0xb900 ]; then
+	echo "PASS: include/uapi/prukit/ws281x.h builds in a program; WS281X_IOC_COMMIT is 0xb900"
+	uapi_rc=0
+else
+	cat "$work/uapi.log"
+	echo "FAIL: include/uapi/prukit/ws281x.h in a program (WS281X_IOC_COMMIT 0xb900)"
+fi
+
+mkdir -p "$work/run"
+python3 "$PRUKIT_TOP/drivers/ws281x/tests/ws281x_sim.py" "$PRUKIT_TOP/out/tools/prusim" \
+	"$fw" "$work/run" && exit "$uapi_rc"
