@@ -462,7 +462,6 @@ static void ws281x_blank(struct ws281x *ws)
 	/* Done once each core counted every frame it was sent. */
 	for (c = 0; c < ws->ncores; c++) {
 		struct ws281x_core *core = &ws->cores[c];
-
 		void __iomem *frames = core->ctrl + offsetof(struct ws281x_ctrl, frames);
 
 		while (ws281x_core_ok(core) && readl(frames) < (u32)core->posted) {
