@@ -159,4 +159,52 @@ void *rproc_da_to_va(PRUKIT_RPROC_DA_TO_VA_ARGS);
 			(set_void), (set_int));					\
 	} while (0)
 
+/*
+ * v5.19: 32-bit ARM uses dma-direct ("ARM/dma-mapping: use dma-direct
+ * unconditionally"), whose dma_alloc_noncoherent() allocates cached memory
+ * for streaming-style hand-overs.  Before, ARM's own dma_map_ops had neither
+ * .alloc_noncoherent nor .alloc_pages, and dma_alloc_noncoherent() returned
+ * NULL (Debian's 5.10 armmp).  There the same buffer - cached, handed over
+ * with dma_sync_single_for_cpu()/_for_device() - is the driver's own pages
+ * mapped once with dma_map_single().  Both free what they allocated.
+ */
+#include <linux/dma-mapping.h>
+#include <linux/gfp.h>
+
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 19, 0)
+static inline void *prukit_dma_alloc_noncoherent(struct device *dev, size_t size,
+						 dma_addr_t *dma, enum dma_data_direction dir)
+{
+	return dma_alloc_noncoherent(dev, size, dma, dir, GFP_KERNEL);
+}
+
+static inline void prukit_dma_free_noncoherent(struct device *dev, size_t size, void *va,
+					       dma_addr_t dma, enum dma_data_direction dir)
+{
+	dma_free_noncoherent(dev, size, va, dma, dir);
+}
+#else
+static inline void *prukit_dma_alloc_noncoherent(struct device *dev, size_t size,
+						 dma_addr_t *dma, enum dma_data_direction dir)
+{
+	void *va = alloc_pages_exact(size, GFP_KERNEL);
+
+	if (!va)
+		return NULL;
+	*dma = dma_map_single(dev, va, size, dir);
+	if (dma_mapping_error(dev, *dma)) {
+		free_pages_exact(va, size);
+		return NULL;
+	}
+	return va;
+}
+
+static inline void prukit_dma_free_noncoherent(struct device *dev, size_t size, void *va,
+					       dma_addr_t dma, enum dma_data_direction dir)
+{
+	dma_unmap_single(dev, dma, size, dir);
+	free_pages_exact(va, size);
+}
+#endif
+
 #endif /* PRUKIT_COMPAT_H */

@@ -1090,8 +1090,8 @@ static void ws281x_free_bufs(void *data)
 
 	for (b = 0; b < 2; b++)
 		if (core->buf[b])
-			dma_free_noncoherent(dev, core->buf_size, core->buf[b], core->dma[b],
-					     DMA_TO_DEVICE);
+			prukit_dma_free_noncoherent(dev, core->buf_size, core->buf[b],
+						    core->dma[b], DMA_TO_DEVICE);
 }
 
 static int ws281x_core_init(struct ws281x *ws, unsigned int c)
@@ -1111,8 +1111,8 @@ static int ws281x_core_init(struct ws281x *ws, unsigned int c)
 	if (ret)
 		return ret;
 	for (b = 0; b < 2; b++) {
-		core->buf[b] = dma_alloc_noncoherent(dev, core->buf_size, &core->dma[b],
-						     DMA_TO_DEVICE, GFP_KERNEL);
+		core->buf[b] = prukit_dma_alloc_noncoherent(dev, core->buf_size, &core->dma[b],
+							    DMA_TO_DEVICE);
 		if (!core->buf[b])
 			return dev_err_probe(dev, -ENOMEM, "no DMA memory for %zu-byte frames\n",
 					     core->buf_size);
