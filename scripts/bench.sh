@@ -10,6 +10,10 @@
 #   - PRU cycles the firmware spends per received and per sent rpmsg message
 #     (exact: counted by the simulator in tests/rpmsg-fw, not timed)
 #   - pru_sim's PRU -> ARM event latency in PRU cycles
+#   - ws281x, 48 strings x 600 LEDs: the ARM's instructions per LED to
+#     convert a frame (callgrind, host build of drivers/ws281x/ws281x_conv.c)
+#     and the PRU cycles and frames per second of the real firmware in
+#     prusim (exact; drivers/ws281x/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 set -euo pipefail
@@ -21,6 +25,9 @@ make -s -C "$PRUKIT_TOP" tools firmware >/dev/null
 	die "tests/rpmsg-fw failed; see out/rpmsg-fw-bench.log"
 sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exact)/p' \
 	"$PRUKIT_TOP/out/rpmsg-fw-bench.log" | sed 's/; /\n       /g'
+"$PRUKIT_TOP/drivers/ws281x/tests/bench.sh" >"$PRUKIT_TOP/out/ws281x-bench.log" 2>&1 ||
+	die "drivers/ws281x/tests/bench.sh failed; see out/ws281x-bench.log"
+grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
 out=$PRUKIT_TOP/out/bench
 "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out" 2>&1 |
 	grep -E '^(BENCH|INFO):' || true

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause */
 /*
  * ws281x_proto.h - the ws281x driver's control block, shared verbatim by the
- * driver (drivers/ws281x/ws281x.c) and its PRU firmware (firmware/ws281x.c,
- * firmware/ws281x_send.S).
+ * driver (drivers/ws281x/ws281x_main.c, ws281x_conv.c) and its PRU firmware
+ * (firmware/ws281x.c, firmware/ws281x_send.S).
  *
  * The driver turns a frame into bit slots: one struct ws281x_slot per bit
  * sent, in wire order (the first LED's first bit first), each saying which of

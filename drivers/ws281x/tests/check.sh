@@ -4,12 +4,14 @@
 # drivers/ws281x/tests/check.sh - make check's step driver-ws281x: the
 # ws281x firmware (ws281x-pru0.elf, ws281x-pru1.elf) run in the prusim host
 # tool, its edges checked to the cycle and one capture decoded by sigrok's
-# rgb_led_ws281x (ws281x_sim.py says what is checked).  Builds what it needs
-# (prusim, the PRU toolchain, the two images) from a clean clone.  Prints
+# rgb_led_ws281x (ws281x_sim.py says what is checked); and the driver's
+# frame conversion, ws281x_conv.c built for the host, against a reference
+# (tests/conv/conv_test.c).  Builds what it needs (prusim, the PRU
+# toolchain, the two images) from a clean clone.  Prints
 # PASS:/FAIL: lines, and info: lines with the worst edge error per pin kind
 # and the cycles per frame; exits non-zero on any failure.
 #
-# prukit-check-min: 40
+# prukit-check-min: 440
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"
@@ -52,6 +54,18 @@ else
 	echo "FAIL: include/uapi/prukit/ws281x.h in a program (WS281X_IOC_COMMIT 0xb900)"
 fi
 
+# The driver's conversion (drivers/ws281x/ws281x_conv.c), built unchanged
+# for the host, against a reference bit by bit on hundreds of controllers
+# and frames (tests/conv/conv_test.c): a PASS:/FAIL: line per case.
+conv_rc=1
+if make -s -C drivers/ws281x/tests/conv O="$work/conv" "$work/conv/conv_test" \
+	>"$work/conv.log" 2>&1; then
+	"$work/conv/conv_test" && conv_rc=0
+else
+	cat "$work/conv.log"
+	echo "FAIL: building drivers/ws281x/tests/conv/conv_test (ws281x_conv.c on the host)"
+fi
+
 mkdir -p "$work/run"
 python3 "$PRUKIT_TOP/drivers/ws281x/tests/ws281x_sim.py" "$PRUKIT_TOP/out/tools/prusim" \
-	"$fw" "$work/run" && exit "$uapi_rc"
+	"$fw" "$work/run" && [ "$uapi_rc" = 0 ] && exit "$conv_rc"

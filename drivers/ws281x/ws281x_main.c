@@ -56,6 +56,7 @@
 #include "compat.h"
 #include "prukit_pru.h"
 #include "uapi/prukit/ws281x.h"
+#include "ws281x_conv.h"
 #include "ws281x_proto.h"
 
 #define WS281X_MAX_CORES	2
@@ -69,30 +70,11 @@
 enum ws281x_color { WS281X_R, WS281X_G, WS281X_B, WS281X_W };
 
 /**
- * struct ws281x_string - one string of LEDs
- * @core: index of its core in "ti,prus"
- * @gpio: on a GPIO pin (else an R30 bit)
- * @bank: GPIO bank, when @gpio
- * @bit: R30 bit, or bit in the GPIO bank
- * @leds: LEDs on the string
- * @bpl: bytes per LED on the wire: 3, or 4 for RGBW chips
- * @order: the wire's bytes, as indices into the user's R, G, B, W
- */
-struct ws281x_string {
-	unsigned int core;
-	bool gpio;
-	unsigned int bank;
-	unsigned int bit;
-	unsigned int leds;
-	unsigned int bpl;
-	u8 order[4];
-};
-
-/**
  * struct ws281x_core - one PRU core and the frames it sends
  * @pru: the core
  * @ctrl: its control block while the firmware runs
  * @slots: its bit slots per frame (the longest string's bits)
+ * @conv: how its slots are made from a frame (ws281x_conv.c)
  * @buf_size: bytes of each slot buffer
  * @buf: two slot buffers (non-coherent DMA memory: synced at each hand-over)
  * @dma: their bus addresses
@@ -106,6 +88,7 @@ struct ws281x_core {
 	struct prukit_pru *pru;
 	void __iomem *ctrl;
 	unsigned int slots;
+	struct ws281x_conv *conv;
 	size_t buf_size;
 	struct ws281x_slot *buf[2];
 	dma_addr_t dma[2];
@@ -158,7 +141,8 @@ struct ws281x_led {
  * @stage: a write()'s frame, copied before it replaces @frame
  * @lut: the user's lookup table (gamma), applied after @brightness
  * @brightness: global brightness, 0..255
- * @tab: @lut of the value scaled by @brightness, what conversion uses
+ * @tab: what each value becomes on the wire: @lut of the value scaled by
+ *	@brightness, as conversion uses it
  * @reset: cycles the outputs stay low after a frame
  * @shown: frames the PRUs completed (the first core's count)
  * @dropped: LED changes merged into a later frame (not shown on their own)
@@ -186,7 +170,7 @@ struct ws281x {
 	u8 *stage;
 	u8 lut[256];
 	u8 brightness;
-	u8 tab[256];
+	struct ws281x_tab tab;
 	u32 reset;
 	u64 shown;
 	u64 dropped;
@@ -218,53 +202,11 @@ static void ws281x_put_action(void *data)
 	ws281x_put(data);
 }
 
-/* --- turning a frame into bit slots ---------------------------------------- */
+/* --- turning a frame into bit slots (ws281x_conv.c) ---------------------- */
 
 static void ws281x_update_tab(struct ws281x *ws)
 {
-	unsigned int v;
-
-	for (v = 0; v < 256; v++)
-		ws->tab[v] = ws->lut[(v * ws->brightness + 127) / 255];
-}
-
-/*
- * Every set bit of every wire byte of the core's strings becomes a bit in
- * the slot of its position: slot j carries bit 7 - j % 8 of wire byte j / 8.
- * Only set bits cost anything beyond reading the byte.
- */
-static void ws281x_convert(struct ws281x *ws, unsigned int c, struct ws281x_slot *slots)
-{
-	struct ws281x_core *core = &ws->cores[c];
-	unsigned int s;
-
-	memset(slots, 0, core->buf_size);
-	for (s = 0; s < ws->nstrings; s++) {
-		const struct ws281x_string *st = &ws->strings[s];
-		const u8 *px = ws->frame + (size_t)s * ws->max_leds * ws->bpl;
-		u32 *word;
-		unsigned int i, k;
-		u32 bit;
-
-		if (st->core != c)
-			continue;
-		bit = BIT(st->bit);
-		for (i = 0; i < st->leds; i++, px += ws->bpl) {
-			struct ws281x_slot *slot = slots + (size_t)i * st->bpl * 8;
-
-			for (k = 0; k < st->bpl; k++, slot += 8) {
-				unsigned long v = ws->tab[px[st->order[k]]];
-				unsigned int b;
-
-				for_each_set_bit(b, &v, 8) {
-					struct ws281x_slot *t = &slot[7 - b];
-
-					word = st->gpio ? &t->gpio[st->bank] : &t->r30;
-					*word |= bit;
-				}
-			}
-		}
-	}
+	ws281x_conv_tab(&ws->tab, ws->lut, ws->brightness);
 }
 
 /* --- the cores ----------------------------------------------------------- */
@@ -310,7 +252,7 @@ static int ws281x_post(struct ws281x *ws)
 		unsigned int i;
 
 		dma_sync_single_for_cpu(ws->dev, core->dma[b], core->buf_size, DMA_TO_DEVICE);
-		ws281x_convert(ws, c, core->buf[b]);
+		ws281x_convert(core->conv, &ws->tab, ws->frame, core->buf[b]);
 		dma_sync_single_for_device(ws->dev, core->dma[b], core->buf_size, DMA_TO_DEVICE);
 
 		writel(core->dma[b], ctrl + offsetof(struct ws281x_ctrl, frame));
@@ -1092,6 +1034,7 @@ static void ws281x_free_bufs(void *data)
 		if (core->buf[b])
 			prukit_dma_free_noncoherent(dev, core->buf_size, core->buf[b],
 						    core->dma[b], DMA_TO_DEVICE);
+	kvfree(core->conv);
 }
 
 static int ws281x_core_init(struct ws281x *ws, unsigned int c)
@@ -1110,6 +1053,10 @@ static int ws281x_core_init(struct ws281x *ws, unsigned int c)
 	ret = devm_add_action(dev, ws281x_free_bufs, core);
 	if (ret)
 		return ret;
+	core->conv = kvzalloc(ws281x_conv_size(ws->strings, ws->nstrings, c), GFP_KERNEL);
+	if (!core->conv)
+		return -ENOMEM;
+	ws281x_conv_init(core->conv, ws->strings, ws->nstrings, c, ws->max_leds, ws->bpl);
 	for (b = 0; b < 2; b++) {
 		core->buf[b] = prukit_dma_alloc_noncoherent(dev, core->buf_size, &core->dma[b],
 							    DMA_TO_DEVICE);
@@ -1170,6 +1117,8 @@ static int ws281x_probe(struct platform_device *pdev)
 	platform_set_drvdata(pdev, ws);
 
 	BUILD_BUG_ON(WS281X_GPIO_BANKS != PRUKIT_PRU_GPIO_BANKS);
+	/* ws281x_convert() writes the slots as words */
+	BUILD_BUG_ON(sizeof(struct ws281x_slot) != WS281X_SLOT_WORDS * sizeof(u32));
 	n = of_count_phandle_with_args(dev->of_node, "ti,prus", NULL);
 	if (n < 1 || n > WS281X_MAX_CORES)
 		return dev_err_probe(dev, -EINVAL,
