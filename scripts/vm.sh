@@ -132,6 +132,13 @@ make_initrd() {
 		[ -z "$name" ] || install -m 0755 "$path" "$stage/prukit/tests/$name"
 	done <<<"$all"
 	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
+	# and the drivers' guest libraries (drivers/<driver>/tests/vm/lib/*.py)
+	local lib
+	for lib in "$PRUKIT_TOP"/drivers/*/tests/vm/lib/*.py; do
+		[ -e "$lib" ] || continue
+		[ ! -e "$stage/prukit/lib/${lib##*/}" ] || die "guest library ${lib##*/} twice"
+		install -m 0644 "$lib" "$stage/prukit/lib/"
+	done
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{
