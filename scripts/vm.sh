@@ -73,7 +73,8 @@ make_dtb() {
 	for o in "$VMDIR"/overlays/*.dtso; do
 		[ -e "$o" ] || continue
 		name=$(basename "$o" .dtso)
-		dtc -q -@ -I dts -O dtb -o "$dir/$name.dtbo" "$o"
+		"$PRUKIT_TOP/scripts/dtso-build.sh" "$o" "$dir/$name.dtbo" ||
+			die "cannot build overlay $o"
 		overlays+=("$dir/$name.dtbo")
 	done
 	for o in "$PRUKIT_TOP"/out/overlays/*.dtbo; do

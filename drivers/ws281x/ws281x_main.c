@@ -138,7 +138,7 @@ struct ws281x_led {
  * @bpl: bytes per LED in the user's frame: 3 (RGB), or 4 (RGBW)
  * @frame_size: bytes of the user's frame
  * @frame: the driver's user-format frame (vmalloc_user(): mmap()able)
- * @stage: a write()'s frame, copied before it replaces @frame
+ * @stage: a write()'s frame, copied (under @lock) before it replaces @frame
  * @lut: the user's lookup table (gamma), applied after @brightness
  * @brightness: global brightness, 0..255
  * @tab: what each value becomes on the wire: @lut of the value scaled by
@@ -463,15 +463,18 @@ static ssize_t ws281x_write(struct file *file, const char __user *buf, size_t le
 	ret = ws281x_dead(ws);
 	if (ret)
 		goto unlock;
-	/* A faulting copy must leave the driver's frame as it was. */
+	/*
+	 * Room first, then the frame changes: what waits is not torn.  The
+	 * copy comes after the wait, which drops @lock: another writer may
+	 * use @stage meanwhile.  A faulting copy leaves the frame as it was.
+	 */
+	ret = ws281x_wait_room(ws, file->f_flags & O_NONBLOCK);
+	if (ret)
+		goto unlock;
 	if (copy_from_user(ws->stage, buf, len)) {
 		ret = -EFAULT;
 		goto unlock;
 	}
-	/* Room first, then the frame changes: what waits is not torn. */
-	ret = ws281x_wait_room(ws, file->f_flags & O_NONBLOCK);
-	if (ret)
-		goto unlock;
 	memcpy(ws->frame, ws->stage, len);
 	ws->dirty = false;
 	ret = ws281x_post(ws);
