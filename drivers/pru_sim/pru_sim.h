@@ -45,6 +45,8 @@ irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
  * @map_virq: Linux interrupts created for the firmware's .pru_irq_map while
  *	the core runs (disposed of when it stops)
  * @nr_map_virq: entries in @map_virq
+ * @quiesce: subdevice that halts the core before remoteproc tears down the
+ *	vdevs (registered while the core runs)
  */
 struct pru_sim_core {
 	struct pru_sim *sim;
@@ -56,6 +58,7 @@ struct pru_sim_core {
 	struct prusim_elf_info elf;
 	unsigned int map_virq[PRUSIM_NUM_EVENTS];
 	unsigned int nr_map_virq;
+	struct rproc_subdev quiesce;
 };
 
 /**

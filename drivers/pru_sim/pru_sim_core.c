@@ -47,6 +47,9 @@ static int pru_sim_start(struct rproc *rproc)
 	mutex_unlock(&sim->lock);
 
 	pru_sim_kick_thread(sim);
+
+	/* Last in the list: rproc_stop() stops it before the vdevs. */
+	rproc_add_subdev(rproc, &pc->quiesce);
 	return 0;
 }
 
@@ -54,6 +57,8 @@ static int pru_sim_stop(struct rproc *rproc)
 {
 	struct pru_sim_core *pc = rproc->priv;
 	struct pru_sim *sim = pc->sim;
+
+	rproc_remove_subdev(rproc, &pc->quiesce);
 
 	/* Disabled and reset, whether it was running, sleeping or halted. */
 	mutex_lock(&sim->lock);
@@ -63,6 +68,26 @@ static int pru_sim_stop(struct rproc *rproc)
 
 	pru_sim_intc_unmap_firmware(pc);
 	return 0;
+}
+
+/*
+ * rproc_stop() stops the subdevices before it calls ->stop: the rpmsg vdev is
+ * reset and virtio_rpmsg_bus frees its buffers while the core still runs.
+ * Firmware checks DRIVER_OK right before each store into those buffers, but
+ * a slice may end between the check and the store (a PRU -> ARM event of
+ * either core ends it), and the thread drops sim->lock and reschedules
+ * there: the store then lands, a slice later, in freed memory.  So the core
+ * is halted first, under sim->lock: once that is taken no slice runs, and
+ * the next one finds the core disabled.
+ */
+static void pru_sim_quiesce(struct rproc_subdev *subdev, bool crashed)
+{
+	struct pru_sim_core *pc = container_of(subdev, struct pru_sim_core, quiesce);
+	struct pru_sim *sim = pc->sim;
+
+	mutex_lock(&sim->lock);
+	prusim_core_enable(sim->s, pc->index, false);
+	mutex_unlock(&sim->lock);
 }
 
 static void pru_sim_kick(struct rproc *rproc, int vqid)
@@ -262,6 +287,7 @@ static int pru_sim_core_probe(struct platform_device *pdev)
 	pc->sim = sim;
 	pc->dev = dev;
 	pc->rproc = rproc;
+	pc->quiesce.stop = pru_sim_quiesce;
 	/* PRUs wait for their consumer (or for "start" in sysfs). */
 	rproc->auto_boot = false;
 
