@@ -81,6 +81,7 @@ enum ws281x_color { WS281X_R, WS281X_G, WS281X_B, WS281X_W };
  * @r30_mask: R30 bits of its strings
  * @gpio_mask: GPIO bits of its strings, per bank
  * @event: the system event of its "interrupts-extended" entry
+ * @sync: WS281X_SYNC_*: in step with the other core (both drive GPIO pins)
  * @posted: frames posted (the next one goes into buf[@posted % 2])
  * @seq: sequence number of the last SHOW posted, 0 before the first
  */
@@ -95,6 +96,7 @@ struct ws281x_core {
 	u32 r30_mask;
 	u32 gpio_mask[WS281X_GPIO_BANKS];
 	u32 event;
+	u32 sync;
 	u64 posted;
 	int seq;
 };
@@ -263,6 +265,7 @@ static int ws281x_post(struct ws281x *ws)
 			       ctrl + offsetof(struct ws281x_ctrl, gpio_mask) + 4 * i);
 		writel(ws->reset, ctrl + offsetof(struct ws281x_ctrl, reset));
 		writel(core->event, ctrl + offsetof(struct ws281x_ctrl, event));
+		writel(core->sync, ctrl + offsetof(struct ws281x_ctrl, sync));
 		ret = prukit_pru_ctrl_post(core->pru, ctrl, WS281X_CMD_SHOW);
 		if (ret < 0) {
 			ws->stopped = true;
@@ -946,6 +949,11 @@ static int ws281x_parse_string(struct ws281x *ws, struct fwnode_handle *fw,
 	return ws281x_parse_output(ws, fw, st, idx);
 }
 
+static bool ws281x_any(const u32 *gpio_mask)
+{
+	return gpio_mask[0] | gpio_mask[1] | gpio_mask[2] | gpio_mask[3];
+}
+
 static int ws281x_parse(struct ws281x *ws)
 {
 	struct device *dev = ws->dev;
@@ -995,6 +1003,15 @@ static int ws281x_parse(struct ws281x *ws)
 		if (!ws->cores[c].slots)
 			return dev_err_probe(dev, -EINVAL,
 					     "PRU %u in \"ti,prus\" drives no string\n", c);
+	/*
+	 * Both cores writing GPIO banks share the OCP master port: they run
+	 * in step, PRU0 (first in "ti,prus") leading (ws281x_proto.h).
+	 */
+	if (ws->ncores == 2 && ws281x_any(ws->cores[0].gpio_mask) &&
+	    ws281x_any(ws->cores[1].gpio_mask)) {
+		ws->cores[0].sync = WS281X_SYNC_LEADER;
+		ws->cores[1].sync = WS281X_SYNC_FOLLOWER;
+	}
 	ws->frame_size = (size_t)ws->nstrings * ws->max_leds * ws->bpl;
 	return 0;
 }

@@ -30,6 +30,20 @@
  *	whether the frame it queued was taken, and may queue the next one:
  *	one frame is sent while at most one waits.  A frame's slots are free
  *	again once its event came (the next frame uses the other buffer).
+ *
+ * Two cores with GPIO outputs share the PRU-ICSS's one OCP master port: each
+ * edge's four bank writes of one core would delay the other's.  The driver
+ * then sets @sync: PRU0 leads, PRU1 follows, and both time their slots on
+ * the IEP counter (one per PRU cycle, enabled by the leader) instead of
+ * their own CYCLE.  For every frame the follower takes its SHOW, loads its
+ * first slot and sets its @ready to its frame count + 1; the leader, having
+ * taken its SHOW, waits for that, sets its @start_at (slot 0's IEP deadline,
+ * WS281X_SYNC_LEAD cycles ahead) and then its @started to its frame count +
+ * 1; the follower, seeing that, starts WS281X_SYNC_PHASE cycles after the
+ * leader, so that each core's bank writes fall between the other's.  Either
+ * side gives up waiting after about WS281X_SYNC_WAIT cycles and sends the
+ * frame alone (counted in @unsynced): a core stopped behind the driver's
+ * back stalls nothing.
  */
 #ifndef _WS281X_PROTO_H
 #define _WS281X_PROTO_H
@@ -41,7 +55,7 @@
 #endif
 
 #define WS281X_MAGIC		0x78313832u	/* "281x" */
-#define WS281X_VERSION		1
+#define WS281X_VERSION		2
 
 /* Timing, in PRU cycles of 5 ns */
 #define WS281X_SLOT_CYCLES	250	/* 1250 ns per bit */
@@ -52,6 +66,14 @@
 
 #define WS281X_GPIO_BANKS	4
 #define WS281X_MAX_SLOTS	0x100000u	/* 32768 RGBW LEDs per string */
+
+/* Two cores in step (@sync), in PRU cycles */
+#define WS281X_SYNC_NONE	0	/* time slots on the core's own CYCLE */
+#define WS281X_SYNC_LEADER	1	/* PRU0: on the IEP counter, PRU1 follows */
+#define WS281X_SYNC_FOLLOWER	2	/* PRU1: on the IEP counter, after PRU0 */
+#define WS281X_SYNC_LEAD	400	/* leader's slot 0 this far after @start_at is set */
+#define WS281X_SYNC_PHASE	35	/* follower's slots this much after the leader's */
+#define WS281X_SYNC_WAIT	2000000	/* 10 ms */
 
 /* Opcodes */
 #define WS281X_CMD_SHOW		1
@@ -83,8 +105,14 @@ struct ws281x_slot {
  * @event: SHOW: the system event strobed when a frame is done (16..31; the
  *	driver's device tree maps it, "interrupts-extended")
  * @frames: frames sent, reset and event included (the firmware counts)
- * @first_cycle: the core's CYCLE counter when the last frame's first slot
- *	started (the firmware enables the counter), for tests
+ * @first_cycle: the core's CYCLE counter (the IEP counter with @sync) when
+ *	the last frame's first slot started (the firmware enables the
+ *	counter), for tests
+ * @sync: SHOW: WS281X_SYNC_NONE, _LEADER (PRU0) or _FOLLOWER (PRU1)
+ * @ready: follower: the frame count + 1 of the frame it is ready to send
+ * @started: leader: the frame count + 1 of the frame whose @start_at is set
+ * @start_at: leader: the IEP deadline of that frame's slot 0
+ * @unsynced: frames sent alone because the other core did not answer
  */
 struct ws281x_ctrl {
 	struct prukit_ctrl_hdr hdr;
@@ -96,6 +124,11 @@ struct ws281x_ctrl {
 	__u32 event;
 	__u32 frames;
 	__u32 first_cycle;
+	__u32 sync;
+	__u32 ready;
+	__u32 started;
+	__u32 start_at;
+	__u32 unsynced;
 } __packed __aligned(4);
 
 #endif /* _WS281X_PROTO_H */

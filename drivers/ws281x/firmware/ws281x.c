@@ -10,10 +10,17 @@
  * schedule, each pin kind's offset and the cycle budget are described
  * there).  After the reset the frame is counted, a SHOW posted meanwhile
  * is taken (answered), and then the event is strobed.
+ *
+ * With two cores that both drive GPIO strings the driver asks them to run
+ * in step (@sync, ws281x_proto.h): before each frame the follower (PRU1)
+ * says it is ready, the leader (PRU0) waits for that and publishes slot
+ * 0's deadline on the IEP counter, and the follower starts
+ * WS281X_SYNC_PHASE cycles after it, so that their bank writes interleave.
  */
 #include <stdint.h>
 #include <am335x/pruss_cfg.h>
 #include <am335x/pruss_ctrl.h>
+#include <am335x/pruss_iep.h>
 #include <prukit/pru.h>
 #include <prukit/resource_table.h>
 
@@ -29,6 +36,15 @@ struct ws281x_ctrl ws281x_ctrl __attribute__((section(".prukit_ctrl"), used)) = 
 		.size = sizeof(struct ws281x_ctrl),
 	},
 };
+
+/* The other core's control block, in its data RAM */
+#define OTHER_CTRL ((volatile struct ws281x_ctrl *)(PRUSS_LOCAL_DRAM_OTHER + PRUKIT_CTRL_DA))
+
+/* Cycles before slot 0 at which set_clock() hands over to the send */
+#define PRE_WAIT 200
+
+/* Poll rounds of about 10 cycles each: WS281X_SYNC_WAIT cycles */
+#define SYNC_ROUNDS (WS281X_SYNC_WAIT / 10)
 
 /* Copy SHOW's parameters and check them; returns a WS281X_* result. */
 static uint32_t take_show(volatile struct ws281x_ctrl *c, struct ws281x_job *job,
@@ -48,9 +64,14 @@ static uint32_t take_show(volatile struct ws281x_ctrl *c, struct ws281x_job *job
 	any |= *gpio;
 	job->reset = c->reset;
 	job->first_cycle_addr = (uint32_t)(uintptr_t)&c->first_cycle;
+	job->sync = c->sync;
 	*event = c->event;
 
 	if (job->slots < 1 || job->slots > WS281X_MAX_SLOTS ||
+	    job->sync > WS281X_SYNC_FOLLOWER ||
+	    (job->sync && !*gpio) ||
+	    (job->sync == WS281X_SYNC_LEADER && PRUKIT_PRU_CORE != 0) ||
+	    (job->sync == WS281X_SYNC_FOLLOWER && PRUKIT_PRU_CORE != 1) ||
 	    job->reset < WS281X_RESET_MIN ||
 	    *event < PRU_R31_EVENT_FIRST || *event > PRU_R31_EVENT_LAST ||
 	    !job->frame || !any)
@@ -80,6 +101,63 @@ static int take(volatile struct ws281x_ctrl *c, uint16_t *last, struct ws281x_jo
 	return res == WS281X_OK;
 }
 
+/* The IEP counter, one count per PRU cycle, running (both cores may ask). */
+static void iep_start(void)
+{
+	uint32_t cfg = (1u << PRU_IEP_GLOBAL_CFG_DEFAULT_INC_SHIFT) |
+		       (1u << PRU_IEP_GLOBAL_CFG_CMP_INC_SHIFT) | PRU_IEP_GLOBAL_CFG_CNT_ENABLE;
+
+	if (pru_iep_read(PRU_IEP_GLOBAL_CFG) != cfg)
+		pru_iep_write(PRU_IEP_GLOBAL_CFG, cfg);
+}
+
+/*
+ * Where this frame's deadlines come from, and slot 0's: the core's own
+ * CYCLE (restarted: it stops at 0xffffffff, 21 s), or, in step with the
+ * other core, the IEP counter.
+ */
+static void set_clock(volatile struct ws281x_ctrl *c, struct ws281x_job *job)
+{
+	uint32_t want = c->frames + 1, n;
+
+	if (job->sync == WS281X_SYNC_NONE) {
+		pru_cycle_counter_restart();
+		job->clock = PRUSS_LOCAL_CTRL;
+		job->wait_fixed = WS281X_WAIT_CTRL;
+		job->start = 0;
+		return;
+	}
+	iep_start();
+	job->clock = PRUSS_LOCAL_IEP;
+	job->wait_fixed = WS281X_WAIT_IEP;
+	job->start = 0;
+	if (job->sync == WS281X_SYNC_LEADER) {
+		for (n = 0; OTHER_CTRL->ready != want; n++)
+			if (n == SYNC_ROUNDS)
+				break;
+		job->start = pru_iep_read(PRU_IEP_COUNT) + WS281X_SYNC_LEAD;
+		c->start_at = job->start;
+		c->started = want;
+	} else {
+		c->ready = want;
+		for (n = 0; OTHER_CTRL->started != want; n++)
+			if (n == SYNC_ROUNDS)
+				break;
+		if (n < SYNC_ROUNDS)
+			job->start = OTHER_CTRL->start_at + WS281X_SYNC_PHASE;
+	}
+	if (n == SYNC_ROUNDS)
+		c->unsynced++;
+	/*
+	 * ws281x_send.S waits at most 255 cycles for a deadline: come within
+	 * PRE_WAIT of slot 0 here, which leaves the send's setup and slot 0's
+	 * read (about 80 cycles) their time.
+	 */
+	if (job->start)
+		while ((int32_t)(job->start - pru_iep_read(PRU_IEP_COUNT)) > PRE_WAIT)
+			;
+}
+
 int main(void)
 {
 	volatile struct ws281x_ctrl *c = &ws281x_ctrl;
@@ -97,8 +175,7 @@ int main(void)
 			continue;	/* only reads: pru_sim sees a waiting core */
 		go = take(c, &last, &job, &event, &gpio);
 		while (go) {
-			/* from 0 each frame: CYCLE stops at 0xffffffff (21 s) */
-			pru_cycle_counter_restart();
+			set_clock(c, &job);
 			if (gpio)
 				ws281x_send_gpio(&job);
 			else

@@ -23,9 +23,24 @@ struct ws281x_job {
 	uint32_t gpio_mask[WS281X_GPIO_BANKS];
 	uint32_t reset;
 	uint32_t first_cycle_addr;	/* where slot 0's CYCLE goes */
+	uint32_t clock;			/* the deadlines' counter: CTRL or IEP base */
+	uint32_t wait_fixed;		/* WS281X_WAIT_CTRL or WS281X_WAIT_IEP */
+	uint32_t start;			/* slot 0's deadline, 0: from now */
+	uint32_t sync;			/* not read by ws281x_send.S */
 };
 
-static_assert(sizeof(struct ws281x_job) == 36, "ws281x_send.S: JOB_BYTES");
+/*
+ * Cycles between the value a 4-cycle "lbbo" of the clock returns and the
+ * cycle in which the instruction after wait_until issues, besides the
+ * wait itself: sub, sub, qblt, qbbc, lsr, qbeq after the load, plus the
+ * load's cycles after it sampled the counter.  The core's own CYCLE is
+ * sampled in the load's last cycle (3 after its issue); the IEP counter
+ * when the load issues, 3 cycles earlier.
+ */
+#define WS281X_WAIT_CTRL	7
+#define WS281X_WAIT_IEP		10
+
+static_assert(offsetof(struct ws281x_job, sync) == 48, "ws281x_send.S: JOB_BYTES");
 static_assert(offsetof(struct ws281x_job, reset) == 28, "ws281x_send.S: job layout");
 static_assert(sizeof(struct ws281x_slot) == 20, "ws281x_send.S: SLOT_BYTES");
 static_assert(WS281X_SLOT_CYCLES == 250 && WS281X_T0H_CYCLES == 70 &&

@@ -63,34 +63,35 @@
  * slot's r30 word is read (43 cycles); slack 56, 58 and 51 cycles.
  *
  * GCC's PRU ABI: the argument in r14, the result in r14; r0, r1 and
- * r14..r29 are the caller's, r4..r13 are saved here (r4..r10 used); r2
+ * r14..r29 are the caller's, r4..r13 are saved here (r4..r11 used); r2
  * is the stack pointer, r3.w2 the return address.
+ *
+ * The clock: deadlines are values of the counter at job->clock + 0x0c,
+ * the core's own CTRL CYCLE, or the IEP counter that both cores share when
+ * they run in step (ws281x_proto.h, @sync; the C side chooses, and sets
+ * job->wait_fixed to match: see WS281X_WAIT_* in ws281x_fw.h).
  *
  * Registers while sending:
  *   r0  R30 with every string low     r1  reset cycles
  *   r4..r7  &GPIO bank b CLEARDATAOUT (SETDATAOUT is the next word)
- *   r8  this core's CTRL block        r9  deadline of the slot's start
+ *   r8  the clock's register block    r9  deadline of the slot's start
  *   r10 deadline of the next fall     r15 bus address of the slot read next
  *   r16 slots left                    r17 R30 mask
  *   r18..r21 GPIO bank masks          r22 &first_cycle
  *   r23 slot.r30 (then R30 after the 0s fell)
  *   r24..r27 slot.gpio[b] (then mask & ~ones)
  *   r28 R30 with every string high    r29 scratch
+ *   r11 job->wait_fixed
  */
 
 #define SLOT_CYCLES	250		/* WS281X_SLOT_CYCLES */
 #define T0H_CYCLES	70		/* WS281X_T0H_CYCLES */
 #define T1H_CYCLES	140		/* WS281X_T1H_CYCLES */
 #define SLOT_BYTES	20		/* sizeof(struct ws281x_slot) */
-#define JOB_BYTES	36		/* sizeof(struct ws281x_job), ws281x_fw.h */
-#define SAVE_BYTES	28		/* r4..r10 */
+#define JOB_BYTES	48		/* sizeof(struct ws281x_job), ws281x_fw.h */
+#define SAVE_BYTES	32		/* r4..r11 */
 
-#if PRUKIT_PRU_CORE == 1
-#define CTRL_BASE	0x24000		/* PRU1 CTRL */
-#else
-#define CTRL_BASE	0x22000		/* PRU0 CTRL */
-#endif
-#define CTRL_CYCLE	0x0c
+#define CTRL_CYCLE	0x0c		/* CTRL CYCLE, and IEP COUNT */
 
 #define GPIO_CLEAR	0x190		/* CLEARDATAOUT; SETDATAOUT is at +4 */
 #define GPIO_SET_OFF	4
@@ -99,27 +100,23 @@
 #define GPIO2_CLEAR	(0x481ac000 + GPIO_CLEAR)
 #define GPIO3_CLEAR	(0x481ae000 + GPIO_CLEAR)
 
-/*
- * Cycles between the CYCLE value a 4-cycle "lbbo" of CYCLE returns and the
- * cycle in which the instruction after wait_until issues, besides the
- * wait itself: the load samples CYCLE in its last cycle (3 after its
- * issue), then sub, sub, qblt, qbbc, lsr, qbeq; the loop adds n exactly.
- */
-#define WAIT_FIXED	7
 /* Deadline of slot 0, from the CYCLE read that sets it (slack 16 cycles) */
 #define FIRST_LEAD	30
 
 /*
- * wait_until DL: the next instruction issues in the cycle in which CYCLE
- * reads DL.  Costs 10 + n cycles, n = the cycles left, burnt exactly:
- * one more for odd n, then n / 2 rounds of sub/qbne.  A deadline already
+ * wait_until DL: the next instruction issues in the cycle in which the
+ * clock reads DL.  r11 (job->wait_fixed) is the number of cycles between
+ * the value the clock's "lbbo" returns and the cycle in which the
+ * instruction after wait_until issues, besides the wait itself.  Costs
+ * 10 + n cycles, n = the cycles left, burnt exactly: one more for odd n,
+ * then n / 2 rounds of sub/qbne.  A deadline already
  * passed (n "negative") or further than 255 cycles does not wait: an edge
  * would be late, never lost, and nothing can hang here.
  */
 .macro	wait_until dl
 	lbbo	&r29, r8, CTRL_CYCLE, 4
 	sub	r29, \dl, r29
-	sub	r29, r29, WAIT_FIXED
+	sub	r29, r29, r11
 	qblt	9f, r29, 255
 	qbbc	8f, r29, 0
 	nop
@@ -131,9 +128,10 @@
 .endm
 
 /*
- * Save r4..r10, load the job (r15..r23: frame, slots, r30_mask,
- * gpio_mask[4], reset, &first_cycle), and the R30 values with every
- * string low and high; bits outside the mask keep what R30 holds.
+ * Save r4..r11, load the job (r15..r26: frame, slots, r30_mask,
+ * gpio_mask[4], reset, &first_cycle, clock, wait_fixed, start), and the
+ * R30 values with every string low and high; bits outside the mask keep
+ * what R30 holds.
  */
 .macro	prologue
 	sub	r2, r2, SAVE_BYTES
@@ -141,19 +139,24 @@
 	lbbo	&r15, r14, 0, JOB_BYTES
 	mov	r1, r22
 	mov	r22, r23
-	ldi32	r8, CTRL_BASE
+	mov	r8, r24
+	mov	r11, r25
+	mov	r10, r26
 	not	r29, r17
 	and	r0, r30, r29
 	or	r28, r0, r17
 .endm
 
 /*
- * Slot 0's data is in r23.. already: set its deadline FIRST_LEAD cycles
- * from now, publish it as first_cycle, and return it.
+ * Slot 0's data is in r23.. already: its deadline is the job's start, or
+ * (start 0) FIRST_LEAD cycles from now; publish it as first_cycle, and
+ * return it.
  */
 .macro	first_deadline
+	qbne	5f, r10, 0
 	lbbo	&r29, r8, CTRL_CYCLE, 4
-	add	r9, r29, FIRST_LEAD
+	add	r10, r29, FIRST_LEAD
+5:	mov	r9, r10
 	sbbo	&r9, r22, 0, 4
 	mov	r14, r9
 .endm

@@ -86,11 +86,11 @@ def status(seq, result):
     return (seq << 16) | D["PRUKIT_CTRL_READY"] | result
 
 
-CTRL_FMT = "<IHHII" + "I" * 11     # struct ws281x_ctrl, 60 bytes
+CTRL_FMT = "<IHHII" + "I" * 16     # struct ws281x_ctrl, 80 bytes
 CTRL_SIZE = struct.calcsize(CTRL_FMT)
 FIELDS = ["magic", "version", "size", "command", "status", "frame", "slots",
           "r30_mask", "gpio0", "gpio1", "gpio2", "gpio3", "reset", "event",
-          "frames", "first_cycle"]
+          "frames", "first_cycle", "sync", "ready", "started", "start_at", "unsynced"]
 
 
 def pin_name(kind, core, bit):
@@ -136,12 +136,12 @@ class Run:
                  vcd=False, config=()):
         p = {"frame": FRAME_AT, "slots": frame.slots, "r30_mask": frame.r30_mask,
              "gpio": frame.gpio_mask, "reset": D["WS281X_RESET_MIN"], "event": 17,
-             "command": (1 << 16) | D["WS281X_CMD_SHOW"]}
+             "command": (1 << 16) | D["WS281X_CMD_SHOW"], "sync": 0}
         p.update(params or {})
         core = frame.core
         ctrl = struct.pack(CTRL_FMT, D["WS281X_MAGIC"], D["WS281X_VERSION"], CTRL_SIZE,
                            p["command"], 0, p["frame"], p["slots"], p["r30_mask"],
-                           *p["gpio"], p["reset"], p["event"], 0, 0)
+                           *p["gpio"], p["reset"], p["event"], 0, 0, p["sync"], 0, 0, 0, 0)
         base = os.path.join(work, tag)
         for suffix, data in ((".ctrl", ctrl), (".frame", frame.data)):
             with open(base + suffix, "wb") as f:
@@ -178,6 +178,105 @@ class Run:
 
     def counter(self):
         return self.json["pru"][self.core]["cycle_counter"]
+
+
+class PairRun:
+    """Both cores at once, each with its frame and control block (params
+    per core: sync...), as the driver runs a 48-string map."""
+
+    def __init__(self, work, fw, frames, max_cycles, params, tag="pair"):
+        base = os.path.join(work, tag)
+        at = FRAME_AT
+        cmd = [PRUSIM, "--max-cycles", str(max_cycles), "--json"]
+        self.params, self.ctrl = [], []
+        for frame, prm in zip(frames, params):
+            pru = "pru%d" % frame.core
+            p = {"frame": at, "slots": frame.slots, "r30_mask": frame.r30_mask,
+                 "gpio": frame.gpio_mask, "reset": D["WS281X_RESET_MIN"],
+                 "event": 17 + frame.core, "command": (1 << 16) | D["WS281X_CMD_SHOW"],
+                 "sync": 0}
+            p.update(prm)
+            ctrl = struct.pack(CTRL_FMT, D["WS281X_MAGIC"], D["WS281X_VERSION"], CTRL_SIZE,
+                               p["command"], 0, p["frame"], p["slots"], p["r30_mask"],
+                               *p["gpio"], p["reset"], p["event"], 0, 0, p["sync"], 0, 0, 0, 0)
+            for suffix, data in ((".ctrl", ctrl), (".frame", frame.data)):
+                with open("%s%d%s" % (base, frame.core, suffix), "wb") as f:
+                    f.write(data)
+            cmd += ["--" + pru, fw % frame.core,
+                    "--load", "%s:0x%x:%s%d.ctrl" % (pru, D["PRUKIT_CTRL_DA"], base, frame.core),
+                    "--load", "0x%x:%s%d.frame" % (at, base, frame.core),
+                    "--dump", "%s:0x%x:%d:%s%d.out" % (pru, D["PRUKIT_CTRL_DA"], CTRL_SIZE,
+                                                       base, frame.core)]
+            self.params.append(p)
+            at += (len(frame.data) + 0xff) & ~0xff
+        cmd += ["--ddr", str(at - DDR + 0x100), "--events", base + ".events"]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode:
+            raise RuntimeError("prusim (%s) exited %d: %s" % (tag, r.returncode, r.stderr.strip()))
+        self.json = json.loads(r.stdout.splitlines()[-1])
+        for frame in frames:
+            with open("%s%d.out" % (base, frame.core), "rb") as f:
+                self.ctrl.append(dict(zip(FIELDS, struct.unpack(CTRL_FMT, f.read()))))
+        self.edges = {}
+        with open(base + ".events") as f:
+            for line in f:
+                cycle, pin, level = line.split()
+                self.edges.setdefault(pin, []).append((int(cycle), int(level)))
+
+
+def pair_check(work, fw, rng, worst_all):
+    """Both cores with R30 and GPIO strings on all four banks: alone, their
+    bank writes collide and edges move; in step (sync), every edge of both
+    is exact and PRU1's slots start WS281X_SYNC_PHASE cycles after PRU0's."""
+    frames = []
+    for core, bits in ((0, (3, 11, 20, 29)), (1, (4, 12, 21, 30))):
+        strings = [("r30", 2 + core, random_bytes(rng, 9 + 3 * core))]
+        strings += [(b, bits[b], random_bytes(rng, 6 + 3 * ((b + core) % 3))) for b in range(4)]
+        frames.append(Frame(core, strings))
+    budget = 300000
+    alone = PairRun(work, fw, frames, budget, [{}, {}], "pair-alone")
+    moved = 0
+    for frame in frames:
+        for kind, bit, _ in frame.strings:
+            e = alone.edges.get(pin_name(kind, frame.core, bit), [])
+            highs = {b[0] - a[0] for a, b in zip(e[0::2], e[1::2])}
+            moved += len(highs - {T0H, T1H})
+    check("both cores alone (no sync), GPIO strings on both: their bank writes collide and "
+          "edges move (%d odd high times)" % moved, moved > 0)
+    lead, follow = D["WS281X_SYNC_LEADER"], D["WS281X_SYNC_FOLLOWER"]
+    run = PairRun(work, fw, frames, budget, [{"sync": lead}, {"sync": follow}], "pair-sync")
+    starts = []
+    for frame, ctrl in zip(frames, run.ctrl):
+        name = "in step, pru%d" % frame.core
+        start, worst, offsets = check_frame(name, run, frame)
+        starts.append(start)
+        for k, v in worst.items():
+            worst_all.setdefault("R30" if k == "r30" else "gpio%d" % k, []).append(v)
+        check("%s: every edge exact (worst %d), bank offsets %s == %s"
+              % (name, max(worst.values()), [offsets.get(b) for b in range(4)], GPIO_OFFSET),
+              max(worst.values()) == 0 and [offsets.get(b) for b in range(4)] == GPIO_OFFSET)
+        check("%s: the frame sent and counted, none unsynced (frames %d, unsynced %d)"
+              % (name, ctrl["frames"], ctrl["unsynced"]),
+              ctrl["frames"] == 1 and ctrl["unsynced"] == 0 and
+              ctrl["status"] == status(1, D["WS281X_OK"]))
+    if None not in starts:
+        check("in step: PRU1's slot 0 starts %d cycles after PRU0's (WS281X_SYNC_PHASE %d)"
+              % (starts[1] - starts[0], D["WS281X_SYNC_PHASE"]),
+              starts[1] - starts[0] == D["WS281X_SYNC_PHASE"])
+    check("in step: first_cycle of both on the IEP counter, %d apart"
+          % (run.ctrl[1]["first_cycle"] - run.ctrl[0]["first_cycle"]),
+          run.ctrl[1]["first_cycle"] - run.ctrl[0]["first_cycle"] == D["WS281X_SYNC_PHASE"] and
+          run.ctrl[0]["start_at"] == run.ctrl[0]["first_cycle"])
+    # a follower whose leader never starts sends alone, after the wait
+    solo = PairRun(work, fw, frames[1:], D["WS281X_SYNC_WAIT"] + budget, [{"sync": follow}],
+                   "pair-solo")
+    check("a follower without its leader sends the frame alone after about %d cycles "
+          "(frames %d, unsynced %d)" % (D["WS281X_SYNC_WAIT"], solo.ctrl[0]["frames"],
+                                        solo.ctrl[0]["unsynced"]),
+          solo.ctrl[0]["frames"] == 1 and solo.ctrl[0]["unsynced"] == 1)
+    bad = PairRun(work, fw, frames[1:], 100000, [{"sync": lead}], "pair-bad")
+    check("PRU1 asked to lead: refused (EINVAL)",
+          bad.ctrl[0]["status"] == status(1, D["WS281X_EINVAL"]) and not bad.edges)
 
 
 def decode(edges, slots):
@@ -401,6 +500,9 @@ def main():
                   r.ctrl["status"] == status(1, D[res]) and not r.edges and
                   r.ctrl["frames"] == 0 and r.json["intc"]["raw"] == 0,
                   "status 0x%x, %d pins moved" % (r.ctrl["status"], len(r.edges)))
+
+    # 5. Both cores at once, in step
+    pair_check(work, fw, rng, worst_all)
 
     for kind, errs in sorted(worst_all.items()):
         info("worst edge error, %s strings: %d cycles (over %d runs)" % (kind, max(errs), len(errs)))
