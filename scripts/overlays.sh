@@ -14,9 +14,12 @@
 #     blobs must be identical.
 #  2. The pin table overlays/am335x-pru-pins.tsv checked against each
 #     kernel's am33xx.h, and the pin check of each overlay's blob: the PRU
-#     signals its "prukit-pins:" lines name are muxed to the right mode by a
-#     pinctrl-single group some node's pinctrl-0 applies, r31 (input) pads
-#     have INPUT_EN, every pad is a known AM335x pad and appears once.
+#     signals and GPIOs its "prukit-pins:" lines name are muxed to the right
+#     mode by a pinctrl-single group some node's pinctrl-0 applies, r31
+#     (input) pads have INPUT_EN, every pad is a known AM335x pad and appears
+#     once.  The table's R30 rows against pru_sim's pads; its GPIO rows
+#     against the gpio-line-names of the board trees of step 4 and the
+#     kernel's own pinmux comments.
 #  3. Documentation/devicetree/bindings/**/*.yaml (N >= 0): yamllint,
 #     dt-doc-validate, and the examples compiled and checked with dt-validate,
 #     once per kernel series with that kernel's bindings.
@@ -27,7 +30,9 @@
 #     "prukit-expect:" lines of each overlay are asserted with fdtget; the
 #     pin check again on the merged tree, plus: no pad of the overlay in a
 #     pinctrl group an enabled node of the base tree uses, unless the overlay
-#     names that board function in "prukit-conflicts:".
+#     names that board function in "prukit-conflicts:".  An overlay with a
+#     "prukit-boards:" line is checked on those boards' trees only (SKIP in
+#     the summary of the others).
 #  5. Self-tests that prove steps 2-4 can fail: the bogus-property overlay
 #     and binding fixtures below, and the pin-check fixtures in
 #     tests/overlays/*.dtso, each of which must be rejected for exactly the
@@ -317,7 +322,9 @@ file == 1 {
 	o = num($2)
 	if (o < 0) print where ": offset " $2 " is not a hex number"
 	if ($5 !~ /^[0-7]$/) print where ": mode " $5 " is not 0-7"
-	if ($6 !~ /^pru[01]_r3[01]_([0-9]|[12][0-9]|3[01])$/) print where ": signal " $6 " is not pruN_r30_B/pruN_r31_B"
+	if ($6 !~ /^(pru[01]_r3[01]|gpio[0-3])_([0-9]|[12][0-9]|3[01])$/)
+		print where ": signal " $6 " is not pruN_r30_B/pruN_r31_B/gpioB_N"
+	else if (($6 ~ /^gpio/) != ($5 == 7)) print where ": " $6 " in mode " $5 ": GPIOs are mode 7, PRU signals never"
 	if ($3 !~ /^(P[89]_[0-9]+[AB]?|-)$/) print where ": Black pin " $3 " is not P8_N/P9_N"
 	if ($4 !~ /^(P[12]\.[0-9][0-9]|-)$/) print where ": Pocket pin " $4 " is not P1.NN/P2.NN"
 	if ($3 == "-" && $4 == "-") print where ": " $1 " is on no header"
@@ -327,6 +334,7 @@ file == 1 {
 	mux[o, $5] = FNR
 	if ((o, $6) in sig) print where ": " $6 " on " $1 " twice"
 	sig[o, $6] = 1
+	if ($6 ~ /^gpio/) { if ($6 in gpad) print where ": " $6 " also on " gpad[$6]; gpad[$6] = $1 }
 	k = $1 "\t" $2 "\t" $3 "\t" $4 "\t" $7 "\t" $8
 	if (o in padrow && padrow[o] != k) print where ": " $1 ": name, headers or conflicts differ from another row of the same pad"
 	if (!(o in padrow)) {
@@ -650,6 +658,32 @@ board_column() {
 	esac
 }
 
+# An overlay (or fixture) made for some boards only says so in a
+# "prukit-boards: BOARD..." line (base tree names, as in PRUKIT_DT_BOARDS);
+# it is checked on those trees alone, and the others get a SKIP summary.
+KNOWN_BOARDS="am335x-boneblack am335x-pocketbeagle"
+# for_board DTSO BOARD: true if DTSO is meant for BOARD.
+for_board() {
+	local want
+	want=$(decl_lines prukit-boards "$1")
+	[ -z "$want" ] || [[ " $want " == *" $2 "* ]]
+}
+# check_boards DTSO NAME: a FAIL for every name of prukit-boards that is no
+# known base tree (a typo would silently skip every check); false if any.
+check_boards() {
+	local b r=0
+	for b in $(decl_lines prukit-boards "$1"); do
+		if [[ " $KNOWN_BOARDS " != *" $b "* ]]; then
+			fail "$2: prukit-boards names $b, which is none of: $KNOWN_BOARDS"
+			r=1
+		fi
+	done
+	return $r
+}
+for o in "${overlays[@]}"; do
+	check_boards "$OVL_SRC/$o.dtso" "$o" || OVL_OK[$o]=0
+done
+
 AM33XX_H=${KDIR[$FIRST_SERIES]}/include/dt-bindings/pinctrl/am33xx.h
 mkdir -p "$WORK/pins"
 for s in $SERIES; do
@@ -667,7 +701,9 @@ done
 
 # pru_sim's own table of PRU outputs and their pads (which R30 bits reach
 # the simulated board's pins, drivers/pru_sim/pru_sim_board.c) must say what
-# the pin table says: the same (core, bit, pad, mode) for every R30 signal.
+# the pin table says: the same (core, bit, pad, mode) for every R30 signal
+# (the table's r31 and GPIO rows are not pru_sim's business: it models GPIO
+# banks, not which pad carries which GPIO).
 # pin_table_vs_sim TSV C: prints the differences, exits non-zero if any.
 pin_table_vs_sim() {
 	python3 - "$1" "$2" <<'PY'
@@ -761,6 +797,154 @@ for s in $SERIES; do
 		fi
 	done
 done
+
+# The GPIO rows of the pin table against the kernel: each row's header pins
+# against the gpio-line-names of the board trees (gpioB_N is line N of the
+# node labelled gpioB), where the trees' names differ as the table's
+# "# line-name:" lines say; every line a tree names after a header pin must
+# have its row; and each row's pad against the kernel's own dts comments
+# "AM33XX_PADCONF(AM335X_PIN_pad, ..., MUX_MODE7) /* ... gpioB_N */" (or
+# gpioB[N]), the gpio most of them name for the pad.  A pad no comment names
+# is confirmed through the header pin of its PRU rows (the table's checks
+# keep a pad's rows on one header pin), or rests on the datasheet alone.
+# pin_table_vs_trees TSV KDIR SERIES BOARD=DTB...: prints "PASS<TAB>msg" and
+# "FAIL<TAB>msg" lines.
+pin_table_vs_trees() {
+	python3 - "$@" <<'PY'
+import collections, glob, re, subprocess, sys
+tsv, kdir, series = sys.argv[1:4]
+dtbs = [a.split("=", 1) for a in sys.argv[4:]]
+COL = {"am335x-boneblack": 2, "am335x-pocketbeagle": 3}
+HEADER = re.compile(r"P[89]_\d+[AB]?|P[12]\.\d\d")
+rows, alias, pru_pads = [], {}, set()
+for line in open(tsv):
+    if line.startswith("# line-name:"):
+        f = line[len("# line-name:"):].strip().split("\t")
+        alias[f[0], f[1]] = None if f[2] == "-" else f[2]
+    if line.startswith("#") or not line.strip():
+        continue
+    f = line.rstrip("\n").split("\t")
+    if f[5].startswith("gpio"):
+        rows.append(f)
+    else:
+        pru_pads.add(f[0])
+
+def out(ok, msg):
+    print(("PASS\t" if ok else "FAIL\t") + msg)
+
+def norm(name):
+    m = re.fullmatch(r"P([89])_(\d+)", name)
+    return "P%s_%02d" % (m[1], int(m[2])) if m else name
+
+def line_names(dtb):
+    names = {}
+    for b in range(4):
+        path = subprocess.run(["fdtget", "-t", "s", dtb, "/__symbols__", "gpio%d" % b],
+                              capture_output=True, text=True).stdout.strip()
+        raw = subprocess.run(["fdtget", "-t", "bx", dtb, path, "gpio-line-names"],
+                             capture_output=True, text=True).stdout.split()
+        for n, s in enumerate(bytes(int(x, 16) for x in raw).split(b"\0")[:-1]):
+            w = s.decode().split()
+            names["gpio%d_%d" % (b, n)] = w[0] if w and HEADER.fullmatch(w[0]) else None
+    return names
+
+for board, dtb in dtbs:
+    names = line_names(dtb)
+    where = "linux-%s %s's gpio-line-names" % (series, board)
+    if not names:
+        out(False, "pin table: no gpio-line-names in %s" % dtb)
+        continue
+    table, bad, unnamed, nalias = {}, [], [], 0
+    for f in rows:
+        if f[COL[board]] == "-":
+            continue
+        if f[5] in table:
+            bad.append("%s on two rows (%s, %s)" % (f[5], table[f[5]], f[COL[board]]))
+        table[f[5]] = f[COL[board]]
+    for g, pin in sorted(table.items()):
+        theirs = names.get(g)
+        if theirs is None:
+            unnamed.append("%s = %s" % (g, pin))
+            continue
+        ours = alias.get((board, theirs), norm(theirs))
+        nalias += (board, theirs) in alias
+        if ours != pin:
+            bad.append("%s: the table says %s, the tree %s" % (g, pin, theirs))
+    for g, theirs in sorted(names.items()):
+        if theirs and alias.get((board, theirs), "") is not None and g not in table:
+            bad.append("%s: the tree names it %s, the table has no row for it there" % (g, theirs))
+    if bad:
+        out(False, "pin table: GPIO rows and %s differ: %s" % (where, "; ".join(bad)))
+    else:
+        out(True, "pin table: the %d GPIO rows with a header pin on %s match %s (%d via '# line-name:'%s)"
+            % (len(table), board, where, nalias,
+               "; not named there: " + ", ".join(unnamed) if unnamed else ""))
+
+named = collections.defaultdict(collections.Counter)
+pat = re.compile(r"AM33XX_PADCONF\((AM335X_PIN_\w+),[^)]*MUX_MODE7\)(.*)")
+for f in glob.glob(kdir + "/arch/arm/boot/dts/**/am33*.dts*", recursive=True):
+    for line in open(f, errors="replace"):
+        m = pat.search(line)
+        g = re.findall(r"gpio([0-3])(?:_|\[)(\d+)", m[2]) if m else []
+        if len(g) == 1:
+            named[m[1]]["gpio%s_%s" % g[0]] += 1
+bad, by_comment, by_pru, alone = [], 0, 0, []
+for f in rows:
+    pad, g = f[0], f[5]
+    if named[pad]:
+        top = named[pad].most_common(1)[0]
+        if top[0] == g:
+            by_comment += 1
+        else:
+            bad.append("%s is %s here, %s in %d dts comment(s)" % (pad, g, top[0], top[1]))
+    elif pad in pru_pads:
+        by_pru += 1
+    else:
+        alone.append("%s %s" % (pad[len("AM335X_PIN_"):].lower(), g))
+if bad:
+    out(False, "pin table: GPIO rows' pads differ from linux-%s's dts comments: %s" % (series, "; ".join(bad)))
+else:
+    out(True, "pin table: GPIO rows' pads: %d as linux-%s's dts comments name them, %d through the"
+        " header pins of their PRU rows, %d on the datasheet alone (%s)"
+        % (by_comment, series, by_pru, len(alone), ", ".join(alone)))
+PY
+}
+
+# report_lines FILE: PASS:/FAIL: lines for "PASS<TAB>msg"/"FAIL<TAB>msg".
+report_lines() {
+	local kind m
+	while IFS=$'\t' read -r kind m; do
+		if [ "$kind" = PASS ]; then pass "$m"; else fail "$m"; fi
+	done <"$1"
+}
+
+for s in $SERIES; do
+	args=()
+	for b in $BOARDS; do
+		[ -n "${BASE[$s/$b]}" ] && [ -n "$(board_column "$b")" ] && args+=("$b=${BASE[$s/$b]}")
+	done
+	if ! pin_table_vs_trees "$PIN_TABLE" "${KDIR[$s]}" "$s" "${args[@]}" >"$WORK/pins/trees-$s" \
+		2>"$WORK/pins/trees-$s.err"; then
+		fail "pin table against the linux-$s trees: the comparison itself failed:"
+		show "$WORK/pins/trees-$s.err" 8
+	fi
+	report_lines "$WORK/pins/trees-$s"
+done
+# ... and that comparison can fail: gpmc_ad12's GPIO row given gpmc_ad13's GPIO.
+sed 's/^\(AM335X_PIN_GPMC_AD12\t.*\t7\t\)gpio1_12\t/\1gpio1_13\t/' "$PIN_TABLE" >"$WORK/pins/table-bad.tsv"
+s=$FIRST_SERIES
+if [ -z "${BASE[$s/am335x-boneblack]:-}" ]; then
+	msg "no linux-$s am335x-boneblack tree in this run: the GPIO row self-test is left out"
+elif ! cmp -s "$PIN_TABLE" "$WORK/pins/table-bad.tsv" &&
+	pin_table_vs_trees "$WORK/pins/table-bad.tsv" "${KDIR[$s]}" "$s" \
+		"am335x-boneblack=${BASE[$s/am335x-boneblack]}" >"$WORK/pins/trees-bad" 2>&1 &&
+	grep -q '^FAIL.*gpio1_12: the tree names it P8_12, the table has no row' "$WORK/pins/trees-bad" &&
+	grep -q '^FAIL.*AM335X_PIN_GPMC_AD12 is gpio1_13 here, gpio1_12' "$WORK/pins/trees-bad"; then
+	pass "self-test: a GPIO row with the wrong GPIO is caught by the line names and the dts comments"
+else
+	fail "self-test: a GPIO row with the wrong GPIO (gpmc_ad12 = gpio1_13) is not caught:"
+	show "$WORK/pins/trees-bad" 5
+fi
 
 # ------------------------------------------------------------ bindings tree
 
@@ -1052,6 +1236,7 @@ for s in $SERIES; do
 		[ -n "${BASE[$s/$b]}" ] || continue
 		for o in "${overlays[@]}"; do
 			[ "${OVL_OK[$o]}" = 1 ] || continue
+			for_board "$OVL_SRC/$o.dtso" "$b" || continue
 			m=$WORK/$s/$b+$o.dtb
 			if fdtoverlay -i "${BASE[$s/$b]}" -o "$m" "$WORK/$s/$o.dtbo" \
 				>"$m.log" 2>&1; then
@@ -1201,6 +1386,11 @@ for s in $SERIES; do
 		for o in "${overlays[@]}"; do
 			[ "${OVL_OK[$o]}" = 1 ] || { echo "FAIL (overlay did not build)" \
 				>"$WORK/summary.$s.$b.$o"; continue; }
+			if ! for_board "$OVL_SRC/$o.dtso" "$b"; then
+				echo "SKIP (prukit-boards: $(decl_lines prukit-boards "$OVL_SRC/$o.dtso"))" \
+					>"$WORK/summary.$s.$b.$o"
+				continue
+			fi
 			if [ -z "${BASE[$s/$b]}" ] || [ -z "${SCHEMA[$s]}" ]; then
 				echo "FAIL (no base tree or schema)" >"$WORK/summary.$s.$b.$o"
 				continue
@@ -1234,12 +1424,14 @@ for f in "$FIXTURES"/*.dtso; do
 		show "$d.log" 10
 		continue
 	fi
+	check_boards "$f" "self-test pins: ${f#"$PRUKIT_TOP"/}" || continue
 	dt_table "$d.dtbo" "$d.blob"
 	pincheck "$f" "$d.blob" >"$d.out"
 	ntrees=0
 	for s in $SERIES; do
 		for b in $BOARDS; do
 			[ -n "${BASE[$s/$b]}" ] || continue
+			for_board "$f" "$b" || continue
 			if ! fdtoverlay -i "${BASE[$s/$b]}" -o "$d.$s.$b.dtb" "$d.dtbo" >"$d.log" 2>&1; then
 				printf 'FAIL\tapply\tfdtoverlay cannot apply it to %s\n' "$s/$b" >>"$d.out"
 				continue
@@ -1249,12 +1441,28 @@ for f in "$FIXTURES"/*.dtso; do
 			ntrees=$((ntrees + 1))
 		done
 	done
+	# prukit-boards: checked on exactly the listed boards' trees of this run
+	listed=$(decl_lines prukit-boards "$f")
+	if [ -n "$listed" ]; then
+		nwant=0
+		for s in $SERIES; do
+			for b in $BOARDS; do
+				case " $listed " in *" $b "*) [ -z "${BASE[$s/$b]}" ] || nwant=$((nwant + 1)) ;; esac
+			done
+		done
+		if [ "$ntrees" -ne "$nwant" ]; then
+			fail "self-test pins: $n.dtso (prukit-boards: $listed) was checked on $ntrees" \
+				"merged trees, not the $nwant of its boards"
+			continue
+		fi
+	fi
 	got=$(awk -F'\t' '$1 == "FAIL" { print $2 }' "$d.out" | sort -u | tr '\n' ' ')
 	nwhy=$(grep -c '^FAIL' "$d.out" || true)
 	why=$(awk -F'\t' '$1 == "FAIL" { print $3; exit }' "$d.out")
 	if [ "$want" = pass ]; then
 		if [ -z "$got" ]; then
-			pass "self-test pins: $n.dtso (valid) passes on its blob and $ntrees merged trees"
+			pass "self-test pins: $n.dtso (valid) passes on its blob and $ntrees merged" \
+				"trees${listed:+ (prukit-boards: $listed; other boards skipped)}"
 		else
 			fail "self-test pins: $n.dtso (valid) is rejected (${got% }):"
 			grep '^FAIL' "$d.out" | show /dev/stdin 8
