@@ -223,6 +223,9 @@ class PairRun:
                 cycle, pin, level = line.split()
                 self.edges.setdefault(pin, []).append((int(cycle), int(level)))
 
+    def event_raised(self, ev):
+        return bool((self.json["intc"]["raw"] >> ev) & 1)
+
 
 def pair_check(work, fw, rng, worst_all):
     """Both cores with R30 and GPIO strings on all four banks: alone, their
