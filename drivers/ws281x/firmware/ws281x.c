@@ -42,6 +42,8 @@ struct ws281x_ctrl ws281x_ctrl __attribute__((section(".prukit_ctrl"), used)) = 
 
 /* Cycles before slot 0 at which set_clock() hands over to the send */
 #define PRE_WAIT 200
+/* The fewest cycles before slot 0 the send needs (setup, slot 0's read) */
+#define MIN_AHEAD 120
 
 /* Poll rounds of about 10 cycles each: WS281X_SYNC_WAIT cycles */
 #define SYNC_ROUNDS (WS281X_SYNC_WAIT / 10)
@@ -145,6 +147,12 @@ static void set_clock(volatile struct ws281x_ctrl *c, struct ws281x_job *job)
 				break;
 		if (n < SYNC_ROUNDS)
 			job->start = OTHER_CTRL->start_at + WS281X_SYNC_PHASE;
+		/* a leader that went ahead alone: no deadline in the past */
+		if (job->start &&
+		    (int32_t)(job->start - pru_iep_read(PRU_IEP_COUNT)) < MIN_AHEAD) {
+			job->start = 0;
+			n = SYNC_ROUNDS;
+		}
 	}
 	if (n == SYNC_ROUNDS)
 		c->unsynced++;

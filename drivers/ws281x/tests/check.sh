@@ -11,7 +11,7 @@
 # PASS:/FAIL: lines, and info: lines with the worst edge error per pin kind
 # and the cycles per frame; exits non-zero on any failure.
 #
-# prukit-check-min: 440
+# prukit-check-min: 460
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"

@@ -184,7 +184,7 @@ class PairRun:
     """Both cores at once, each with its frame and control block (params
     per core: sync...), as the driver runs a 48-string map."""
 
-    def __init__(self, work, fw, frames, max_cycles, params, tag="pair"):
+    def __init__(self, work, fw, frames, max_cycles, params, tag="pair", extra=()):
         base = os.path.join(work, tag)
         at = FRAME_AT
         cmd = [PRUSIM, "--max-cycles", str(max_cycles), "--json"]
@@ -209,7 +209,7 @@ class PairRun:
                                                        base, frame.core)]
             self.params.append(p)
             at += (len(frame.data) + 0xff) & ~0xff
-        cmd += ["--ddr", str(at - DDR + 0x100), "--events", base + ".events"]
+        cmd += ["--ddr", str(at - DDR + 0x100), "--events", base + ".events"] + list(extra)
         r = subprocess.run(cmd, capture_output=True, text=True)
         if r.returncode:
             raise RuntimeError("prusim (%s) exited %d: %s" % (tag, r.returncode, r.stderr.strip()))
@@ -277,6 +277,19 @@ def pair_check(work, fw, rng, worst_all):
           "(frames %d, unsynced %d)" % (D["WS281X_SYNC_WAIT"], solo.ctrl[0]["frames"],
                                         solo.ctrl[0]["unsynced"]),
           solo.ctrl[0]["frames"] == 1 and solo.ctrl[0]["unsynced"] == 1)
+    # a follower whose leader went ahead alone: its slot 0 deadline is past
+    late = os.path.join(work, "pair-late-leader.ctrl")
+    with open(late, "wb") as f:
+        f.write(struct.pack(CTRL_FMT, D["WS281X_MAGIC"], D["WS281X_VERSION"], CTRL_SIZE,
+                            *([0] * 13), 0, 1, 1, 5, 0))
+    run = PairRun(work, fw, frames[1:], budget, [{"sync": follow}], "pair-late",
+                  ("--load", "pru0:0x%x:%s" % (D["PRUKIT_CTRL_DA"], late)))
+    _, worst, _ = check_frame("follower of a leader gone ahead", run, frames[1])
+    check("a follower whose leader's slot 0 is already past sends on its own schedule: "
+          "every edge exact (worst %d), unsynced %d" % (max(worst.values()),
+                                                        run.ctrl[0]["unsynced"]),
+          max(worst.values()) == 0 and run.ctrl[0]["unsynced"] == 1 and
+          run.ctrl[0]["frames"] == 1)
     bad = PairRun(work, fw, frames[1:], 100000, [{"sync": lead}], "pair-bad")
     check("PRU1 asked to lead: refused (EINVAL)",
           bad.ctrl[0]["status"] == status(1, D["WS281X_EINVAL"]) and not bad.edges)
