@@ -4,8 +4,8 @@ trace turned into VCD and pin events by the prusim tool, decoded by sigrok's
 own rgb_led_ws281x decoder (sigrok-cli), and every edge checked against the
 driver's schedule to the PRU cycle: 1250 ns per bit, high 350 ns for a 0 and
 700 ns for a 1, at least 300 us low between frames."""
+import importlib.util
 import os
-import re
 import subprocess
 
 TOP = os.path.realpath(os.path.join(os.path.dirname(__file__), "../../../../.."))
@@ -37,38 +37,25 @@ def convert(trace):
     return base + ".events", base + ".vcd"
 
 
+def _show():
+    """tools/ws281x-show.py, which has sigrok-cli's rgb_led_ws281x runner."""
+    spec = importlib.util.spec_from_file_location(
+        "ws281x_show", os.path.join(TOP, "tools/ws281x-show.py"))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
 def sigrok_frames(vcd, pins):
     """{pin: the frames sigrok's rgb_led_ws281x decodes on it}, one decoder
     per pin in one sigrok-cli run; a frame is a list of "#rrggbb" (sigrok
-    assumes GRB on the wire)."""
+    assumes GRB on the wire).  Sampled at 20 MHz, idle times shortened to
+    100 us: exact timing is checked here, from the events, not by sigrok."""
     if isinstance(pins, str):
         return sigrok_frames(vcd, [pins])[pins]
-    # 20 MHz is plenty for the decoder (350/700/1250 ns: 7/14/25 samples)
-    # and ten times cheaper than the trace's 200 MHz; exact timing is
-    # checked here, from the events, not by sigrok.
-    cmd = ["sigrok-cli", "-I", "vcd:downsample=10", "-i", vcd]
-    for pin in pins:
-        cmd += ["-P", "rgb_led_ws281x:din=" + pin]
-    r = subprocess.run(cmd + ["-A", "rgb_led_ws281x=rgb:reset"], capture_output=True, text=True)
-    if r.returncode:
-        raise RuntimeError("sigrok-cli: " + r.stderr.strip())
-    frames = {pin: [] for pin in pins}
-    cur = {pin: [] for pin in pins}
-    for line in r.stdout.splitlines():
-        m = re.match(r"rgb_led_ws281x-(\d+): (#[0-9a-f]{6}|RESET)$", line.strip())
-        if not m:
-            continue
-        pin = pins[int(m.group(1)) - 1]
-        if m.group(2) == "RESET":
-            if cur[pin]:
-                frames[pin].append(cur[pin])
-            cur[pin] = []
-        else:
-            cur[pin].append(m.group(2))
-    for pin in pins:
-        if cur[pin]:
-            frames[pin].append(cur[pin])
-    return frames
+    got = _show().sigrok_strings(vcd, pins, compress=20000, downsample=10)
+    return {pin: [["#%02x%02x%02x" % led for led in frame] for frame in frames]
+            for pin, frames in got.items()}
 
 
 def grb_as_sigrok(wire):
