@@ -132,6 +132,13 @@ struct pru_sim_trace {
  * @ram_phys: CPU physical address of that RAM
  * @ram_size: its size
  * @ocp_err: the reason of the last refused OCP access
+ * @ocp_free_writes: OCP writes that landed in a page the page allocator held
+ *	free (a buffer freed under the firmware)
+ * @ocp_write_pause_us: debugfs knob: after every OCP write the slice ends
+ *	and the thread sleeps this long (0: off; read with READ_ONCE())
+ * @ocp_pause: the slice ended at an OCP write, pause before the next one
+ * @stop_delay_us: debugfs knob: a core's ->stop sleeps this long before it
+ *	halts the core (0: off; read with READ_ONCE())
  * @input: stimulus per input port (PRUSIM_PORT_*)
  * @trace: pin trace
  * @pad: pad registers of the simulated board (pru_sim_board.c), offset
@@ -175,6 +182,10 @@ struct pru_sim {
 	phys_addr_t ram_phys;
 	u64 ram_size;
 	char ocp_err[PRUSIM_REASON_LEN];
+	u64 ocp_free_writes;
+	u32 ocp_write_pause_us;
+	bool ocp_pause;
+	u32 stop_delay_us;
 	struct pru_sim_input input[PRUSIM_NUM_PORTS];
 	struct pru_sim_trace trace;
 	u32 pad[PRU_SIM_NUM_PADS];

@@ -14,6 +14,7 @@
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
+#include <linux/delay.h>
 #include <linux/dma-mapping.h>
 #include <linux/firmware.h>
 #include <linux/interrupt.h>
@@ -57,8 +58,14 @@ static int pru_sim_stop(struct rproc *rproc)
 {
 	struct pru_sim_core *pc = rproc->priv;
 	struct pru_sim *sim = pc->sim;
+	unsigned int delay_us;
 
 	rproc_remove_subdev(rproc, &pc->quiesce);
+
+	/* debugfs stop_delay_us: as if this task were preempted right here */
+	delay_us = READ_ONCE(sim->stop_delay_us);
+	if (delay_us)
+		fsleep(delay_us);
 
 	/* Disabled and reset, whether it was running, sleeping or halted. */
 	mutex_lock(&sim->lock);

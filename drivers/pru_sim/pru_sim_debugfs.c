@@ -16,7 +16,13 @@
  *              (r)  the number of entries, period and origin in use
  *   stats      (r)  cycles, instructions, stalls, state and halt reason;
  *                   whether PRU outputs go through pad muxing, and how many
- *                   output changes reached no pad
+ *                   output changes reached no pad; OCP writes into free pages
+ *   ocp_write_pause_us
+ *              (rw) microseconds the thread sleeps after every OCP write,
+ *                   which ends the slice (0, the default: off)
+ *   stop_delay_us
+ *              (rw) microseconds a core's remoteproc stop sleeps before it
+ *                   halts the core (0, the default: off)
  *   pads       (rw) pad registers of the simulated board (pru_sim_board.c)
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
@@ -26,6 +32,7 @@
 #include <linux/fs.h>
 #include <linux/seq_file.h>
 #include <linux/slab.h>
+#include <linux/time64.h>
 #include <linux/uaccess.h>
 #include <linux/vmalloc.h>
 
@@ -414,6 +421,7 @@ static int pru_sim_stats_show(struct seq_file *m, void *v)
 		   sim->trace.count, sim->trace.dropped, sim->trace.origin);
 	seq_printf(m, "pads %s unmuxed_writes %llu\n", sim->pads_live ? "checked" : "unchecked",
 		   sim->unmuxed_writes);
+	seq_printf(m, "ocp_writes_to_free_pages %llu\n", sim->ocp_free_writes);
 	seq_puts(m, "routes");
 	for (i = 0; i < PRUSIM_NUM_EVENTS; i++)
 		if (sim->mapped & BIT_ULL(i))
@@ -430,6 +438,56 @@ static int pru_sim_stats_show(struct seq_file *m, void *v)
 	return 0;
 }
 DEFINE_SHOW_ATTRIBUTE(pru_sim_stats);
+
+/* ---- knobs: widen races for tests ---- */
+
+/* Longest pause or delay: 1 s (the sleeps are uninterruptible). */
+#define PRU_SIM_KNOB_MAX_US	USEC_PER_SEC
+
+static int pru_sim_knob_get(u32 *knob, u64 *val)
+{
+	*val = READ_ONCE(*knob);
+	return 0;
+}
+
+static int pru_sim_knob_set(u32 *knob, u64 val)
+{
+	if (val > PRU_SIM_KNOB_MAX_US)
+		return -ERANGE;
+	WRITE_ONCE(*knob, (u32)val);
+	return 0;
+}
+
+static int pru_sim_pause_get(void *data, u64 *val)
+{
+	struct pru_sim *sim = data;
+
+	return pru_sim_knob_get(&sim->ocp_write_pause_us, val);
+}
+
+static int pru_sim_pause_set(void *data, u64 val)
+{
+	struct pru_sim *sim = data;
+
+	return pru_sim_knob_set(&sim->ocp_write_pause_us, val);
+}
+DEFINE_DEBUGFS_ATTRIBUTE(pru_sim_pause_fops, pru_sim_pause_get, pru_sim_pause_set, "%llu\n");
+
+static int pru_sim_stop_delay_get(void *data, u64 *val)
+{
+	struct pru_sim *sim = data;
+
+	return pru_sim_knob_get(&sim->stop_delay_us, val);
+}
+
+static int pru_sim_stop_delay_set(void *data, u64 val)
+{
+	struct pru_sim *sim = data;
+
+	return pru_sim_knob_set(&sim->stop_delay_us, val);
+}
+DEFINE_DEBUGFS_ATTRIBUTE(pru_sim_stop_delay_fops, pru_sim_stop_delay_get,
+			 pru_sim_stop_delay_set, "%llu\n");
 
 void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root)
 {
@@ -448,6 +506,10 @@ void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root)
 
 	debugfs_create_file("trace", 0600, sim->debugfs, sim, &pru_sim_trace_fops);
 	debugfs_create_file("stats", 0400, sim->debugfs, sim, &pru_sim_stats_fops);
+	debugfs_create_file_unsafe("ocp_write_pause_us", 0600, sim->debugfs, sim,
+				   &pru_sim_pause_fops);
+	debugfs_create_file_unsafe("stop_delay_us", 0600, sim->debugfs, sim,
+				   &pru_sim_stop_delay_fops);
 	input = debugfs_create_dir("input", sim->debugfs);
 	for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
 		sim->input[i].sim = sim;

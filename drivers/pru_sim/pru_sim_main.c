@@ -17,6 +17,7 @@
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
+#include <linux/delay.h>
 #include <linux/highmem.h>
 #include <linux/io.h>
 #include <linux/ktime.h>
@@ -66,13 +67,30 @@ void pru_sim_kick_thread(struct pru_sim *sim)
 }
 
 /*
+ * Is this page free in the page allocator (on a free list or a per-CPU
+ * list)?  A free page has no reference; every page of a live allocation has
+ * one, or belongs to a compound page whose head has one (page_count()).
+ * The exception, tail pages of a non-compound high-order allocation, is not
+ * what DMA buffers are on ARM: CMA and split_page() hand out pages that
+ * each hold a reference.  A page freed and allocated again is not caught.
+ */
+static bool pru_sim_page_free(unsigned long pfn)
+{
+	return !page_count(pfn_to_page(pfn));
+}
+
+/*
  * OCP master port: addresses in the dma-ranges window are the ARM's RAM,
- * reached page by page; anything else stops the core.
+ * reached page by page; anything else stops the core.  A write that lands
+ * in a free page - a buffer freed under the firmware - is made all the
+ * same, as on a board, and counted (debugfs "stats").
  */
 static int pru_sim_ocp_access(struct pru_sim *sim, u32 addr, void *buf,
 			      unsigned int len, bool write)
 {
 	u64 off = (u64)addr - sim->ram_bus;
+	unsigned int total = len;
+	bool to_free = false;
 	phys_addr_t phys;
 
 	if (addr < sim->ram_bus || off + len > sim->ram_size) {
@@ -93,6 +111,13 @@ static int pru_sim_ocp_access(struct pru_sim *sim, u32 addr, void *buf,
 				 "OCP access at 0x%08x: no RAM at %pa", addr, &phys);
 			return -EFAULT;
 		}
+		if (write && !to_free && pru_sim_page_free(pfn)) {
+			to_free = true;
+			sim->ocp_free_writes++;
+			dev_err_ratelimited(sim->dev,
+					    "PRU OCP write of %u bytes at 0x%08x lands in a free page (%pa)\n",
+					    total, addr, &phys);
+		}
 		va = prukit_kmap_local_page(pfn_to_page(pfn));
 		if (write)
 			memcpy(va + offset_in_page(phys), buf, chunk);
@@ -102,6 +127,11 @@ static int pru_sim_ocp_access(struct pru_sim *sim, u32 addr, void *buf,
 		buf += chunk;
 		phys += chunk;
 		len -= chunk;
+	}
+	/* debugfs ocp_write_pause_us: let the ARM run before the next store */
+	if (write && READ_ONCE(sim->ocp_write_pause_us)) {
+		sim->ocp_pause = true;
+		prusim_yield(sim->s);
 	}
 	return 0;
 }
@@ -216,6 +246,7 @@ static int pru_sim_thread(void *data)
 		ktime_t poll = ns_to_ktime((u64)poll_us * NSEC_PER_USEC);
 		u64 raise, insns, ran;
 		bool busy;
+		unsigned int pause_us;
 		ktime_t t0;
 
 		if (spinning && poll_us)
@@ -255,8 +286,13 @@ static int pru_sim_thread(void *data)
 				pru_sim_report_stops(sim, reported);
 			}
 			spinning = !busy && pru_sim_spinning(sim);
+			pause_us = sim->ocp_pause ? READ_ONCE(sim->ocp_write_pause_us) : 0;
+			sim->ocp_pause = false;
 			mutex_unlock(&sim->lock);
-			cond_resched();
+			if (pause_us)
+				fsleep(pause_us);
+			else
+				cond_resched();
 		} while (busy && !kthread_should_stop() && !atomic_read(&sim->work));
 
 		if (busy)
