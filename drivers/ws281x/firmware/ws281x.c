@@ -166,6 +166,20 @@ static void set_clock(volatile struct ws281x_ctrl *c, struct ws281x_job *job)
 			;
 }
 
+/*
+ * Before the first frame: the outputs may be high (R30 keeps what the last
+ * program left there), and a string needs a low of at least the reset
+ * before its first bit.  GPIO pins are low already: the driver takes them
+ * as outputs driven low.
+ */
+static void first_low(const struct ws281x_job *job)
+{
+	write_r30(read_r30() & ~job->r30_mask);
+	pru_cycle_counter_restart();
+	while (pru_cycle_counter_read() < job->reset)
+		;
+}
+
 int main(void)
 {
 	volatile struct ws281x_ctrl *c = &ws281x_ctrl;
@@ -182,6 +196,8 @@ int main(void)
 		if (PRUKIT_CTRL_SEQ(c->hdr.command) == last)
 			continue;	/* only reads: pru_sim sees a waiting core */
 		go = take(c, &last, &job, &event, &gpio);
+		if (go && !c->frames)
+			first_low(&job);
 		while (go) {
 			set_clock(c, &job);
 			if (gpio)

@@ -441,6 +441,9 @@ def main():
     check("pru0 R30: R30 bits outside r30_mask never move",
           all(p in [pin_name("r30", 0, b) for b in range(8)] for p in run.edges))
     first_cycle_check("pru0 R30", work, fw, frame, run, start)
+    check("pru0 R30: the first frame's slot 0 starts at cycle %d, at least the reset (%d) "
+          "after the core did: its outputs are held low first, whatever R30 held"
+          % (start, run.params["reset"]), start is not None and start >= run.params["reset"])
     done = check_done("pru0 R30", work, fw, frame, run, start)
     if done is not None:
         info("pru0 R30: %d slots, reset %d: slot 0 starts at cycle %d of the run (boot, "

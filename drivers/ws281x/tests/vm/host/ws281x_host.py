@@ -88,6 +88,10 @@ def exact_timing(check, name, edges, reset=RESET, tol=0):
     """Every high T0H or T1H and every rise one SLOT after the one before
     within a frame, within tol ns (0: exactly), and the lows between
     frames >= reset."""
+    # an output brought low before its first frame (first_low() in the
+    # firmware): a fall, then at least a reset's low, is no bit
+    if len(edges) > 1 and edges[0][1] == 0 and edges[1][0] - edges[0][0] >= reset:
+        edges = edges[1:]
     herr, perr, resets, bad = 0, 0, [], 0
     highs, periods = set(), set()
     for i in range(0, len(edges) - 1, 2):

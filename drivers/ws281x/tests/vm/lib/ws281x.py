@@ -5,7 +5,7 @@ own decoder of WS281x strings in pru_sim's pin trace.
 The decoder takes a bit as 1 when its high time is nearer T1H than T0H,
 counts every high time that is neither exactly, and ends a frame at a low of
 at least half the shortest reset; a frame still running when the trace was
-taken is left out."""
+taken is left out, and so is a first fall followed by such a low."""
 import glob
 import os
 
@@ -65,6 +65,10 @@ def frames_of(edges, end, gap=GAP):
     whose bits make no whole byte)."""
     frames, bits, bad = [], [], 0
     i = 0
+    # an output brought low before its first frame (the firmware does that
+    # to what R30 held, then waits a reset): no bit
+    if len(edges) > 1 and edges[0][1] == 0 and edges[1][0] - edges[0][0] >= gap:
+        i = 1
     while i + 1 < len(edges):
         (t0, l0), (t1, l1) = edges[i], edges[i + 1]
         if (l0, l1) != (1, 0):
