@@ -70,7 +70,7 @@ def main():
               "cycles" % (core, cycles, LEDS, slots, reset, PRU_HZ / cycles, r30, gpio))
         print("BENCH: ws281x frame: pru%d: %d cycles over %d slots x %d + reset %d (%.3f%% of "
               "the 1250 ns slots' %.2f fps); slot 0 started %d cycles after the core did "
-              "(boot, SHOW taken, setup, slot 0 read)"
+              "(boot, SHOW taken, the first frame's low hold, setup, slot 0 read)"
               % (core, cycles - ideal, slots, sim.SLOT, reset, 100.0 * ideal / cycles,
                  PRU_HZ / ideal, start))
     if cores == [0, 1]:
@@ -113,7 +113,7 @@ def pair(fw, work, reset):
     print("BENCH: ws281x frame, 48 strings in step: %d PRU cycles for 48x%d (both cores at "
           "once, 8 R30 + 16 GPIO strings each, PRU1 %d cycles after PRU0) = %.2f fps, %.3f%% of "
           "the 1250 ns slots' %.2f fps; worst edge error R30 %d, GPIO %d cycles; PRU0's slot 0 "
-          "%d cycles after both SHOWs were there (boot, handshake, lead %d)"
+          "%d cycles after both SHOWs were there (boot, first frame's low hold, handshake, lead %d)"
           % (cycles, LEDS, starts[1] - starts[0], PRU_HZ / cycles, 100.0 * ideal / cycles,
              PRU_HZ / ideal, worst.get(True, 0), worst.get(False, 0), starts[0],
              sim.D["WS281X_SYNC_LEAD"]))
