@@ -444,50 +444,21 @@ DEFINE_SHOW_ATTRIBUTE(pru_sim_stats);
 /* Longest pause or delay: 1 s (the sleeps are uninterruptible). */
 #define PRU_SIM_KNOB_MAX_US	USEC_PER_SEC
 
-static int pru_sim_knob_get(u32 *knob, u64 *val)
+/* A knob's file has the knob (a u32 of struct pru_sim) as its data. */
+static int pru_sim_knob_get(void *data, u64 *val)
 {
-	*val = READ_ONCE(*knob);
+	*val = READ_ONCE(*(u32 *)data);
 	return 0;
 }
 
-static int pru_sim_knob_set(u32 *knob, u64 val)
+static int pru_sim_knob_set(void *data, u64 val)
 {
 	if (val > PRU_SIM_KNOB_MAX_US)
 		return -ERANGE;
-	WRITE_ONCE(*knob, (u32)val);
+	WRITE_ONCE(*(u32 *)data, (u32)val);
 	return 0;
 }
-
-static int pru_sim_pause_get(void *data, u64 *val)
-{
-	struct pru_sim *sim = data;
-
-	return pru_sim_knob_get(&sim->ocp_write_pause_us, val);
-}
-
-static int pru_sim_pause_set(void *data, u64 val)
-{
-	struct pru_sim *sim = data;
-
-	return pru_sim_knob_set(&sim->ocp_write_pause_us, val);
-}
-DEFINE_DEBUGFS_ATTRIBUTE(pru_sim_pause_fops, pru_sim_pause_get, pru_sim_pause_set, "%llu\n");
-
-static int pru_sim_stop_delay_get(void *data, u64 *val)
-{
-	struct pru_sim *sim = data;
-
-	return pru_sim_knob_get(&sim->stop_delay_us, val);
-}
-
-static int pru_sim_stop_delay_set(void *data, u64 val)
-{
-	struct pru_sim *sim = data;
-
-	return pru_sim_knob_set(&sim->stop_delay_us, val);
-}
-DEFINE_DEBUGFS_ATTRIBUTE(pru_sim_stop_delay_fops, pru_sim_stop_delay_get,
-			 pru_sim_stop_delay_set, "%llu\n");
+DEFINE_DEBUGFS_ATTRIBUTE(pru_sim_knob_fops, pru_sim_knob_get, pru_sim_knob_set, "%llu\n");
 
 void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root)
 {
@@ -506,10 +477,10 @@ void pru_sim_debugfs_init(struct pru_sim *sim, struct dentry *root)
 
 	debugfs_create_file("trace", 0600, sim->debugfs, sim, &pru_sim_trace_fops);
 	debugfs_create_file("stats", 0400, sim->debugfs, sim, &pru_sim_stats_fops);
-	debugfs_create_file_unsafe("ocp_write_pause_us", 0600, sim->debugfs, sim,
-				   &pru_sim_pause_fops);
-	debugfs_create_file_unsafe("stop_delay_us", 0600, sim->debugfs, sim,
-				   &pru_sim_stop_delay_fops);
+	debugfs_create_file_unsafe("ocp_write_pause_us", 0600, sim->debugfs,
+				   &sim->ocp_write_pause_us, &pru_sim_knob_fops);
+	debugfs_create_file_unsafe("stop_delay_us", 0600, sim->debugfs,
+				   &sim->stop_delay_us, &pru_sim_knob_fops);
 	input = debugfs_create_dir("input", sim->debugfs);
 	for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
 		sim->input[i].sim = sim;
