@@ -221,20 +221,23 @@ static bool ws281x_core_ok(struct ws281x_core *core)
 /*
  * Whether every core took its last frame: then the next frame may be
  * posted (its buffer's previous frame is done, since a core takes a frame
- * only after the one before it).  Sets @stopped when a core stopped.
- * Called with @lock held.
+ * only after the one before it).  Sets @stopped when a core stopped: every
+ * core is looked at for that first, so that a writer waiting for a slow
+ * core learns at once that another one stopped.  Called with @lock held.
  */
 static bool ws281x_room(struct ws281x *ws)
 {
 	unsigned int c;
 
 	for (c = 0; c < ws->ncores; c++) {
-		struct ws281x_core *core = &ws->cores[c];
-
-		if (!ws281x_core_ok(core)) {
+		if (!ws281x_core_ok(&ws->cores[c])) {
 			ws->stopped = true;
 			return true;
 		}
+	}
+	for (c = 0; c < ws->ncores; c++) {
+		struct ws281x_core *core = &ws->cores[c];
+
 		if (core->seq && prukit_pru_ctrl_answer(core->ctrl, core->seq) < 0)
 			return false;
 	}
