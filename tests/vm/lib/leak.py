@@ -1,0 +1,107 @@
+# SPDX-License-Identifier: GPL-2.0-only
+"""How every VM test measures leaks, the same way everywhere: run N cycles
+of what could leak, and after a warm-up (a quarter of the cycles, at most
+20), half way through what is left and at the end, drop the caches and read
+
+  - the live objects (active_objs x objsize in /proc/slabinfo) of the
+    kmalloc caches and of kernfs_node_cache, where a leaked device, channel,
+    LED class device, sysfs file or buffer descriptor would stay;
+  - MemAvailable in /proc/meminfo plus the pages the per-CPU lists hold
+    (the "count:" lines of /proc/zoneinfo's pagesets: free pages that
+    MemAvailable does not count, and which swing it by +-16 KiB from one
+    cycle to the next in a 2-CPU guest), where leaked DMA buffers (whole
+    pages) would show.
+
+The growth of the live objects per cycle over the second half must stay
+under a bound well below what one leaked object set per cycle would cost
+(caches that settle early do not count, a leak grows in both halves).
+MemAvailable alone moved with the per-CPU lists (a make check run saw one
+half of tests/vm/cases/85-rpmsg-stop-stress shrink it by 13 KiB/cycle and a
+rerun by 2 KiB); with them counted it still moves with the kernel's own
+caches, and a leak shrinks it in both halves, so the smaller of the two
+halves' shrinks is what is bounded.  SUnreclaim (whole slab pages) and the caches
+that grew most are reported, not bounded.
+
+    meter = LeakMeter(cycles)
+    for cycle in range(cycles):
+        ...
+        meter.after(cycle)
+    meter.check(slab_per_cycle, avail_per_cycle, "what one cycle does")"""
+import os
+import time
+
+from rpmsg import check, info
+
+
+def counted(cache):
+    """Where a leaked driver object lives.  (Not vmap_area: its objects are
+    freed lazily, in batches, so it grows for hundreds of cycles without
+    leaking; and not SUnreclaim, which counts whole slab pages.)"""
+    return cache.startswith("kmalloc-") or cache == "kernfs_node_cache"
+
+
+def meminfo():
+    """(live counted slab bytes, MemAvailable + per-CPU lists,
+    {cache: live bytes}, SUnreclaim), caches dropped first."""
+    with open("/proc/sys/vm/drop_caches", "w") as f:
+        f.write("3")
+    time.sleep(0.5)
+    vals = {}
+    with open("/proc/meminfo") as f:
+        for line in f:
+            k, v = line.split(":")
+            vals[k] = int(v.split()[0]) * 1024
+    caches = {}
+    with open("/proc/slabinfo") as f:
+        for line in f.readlines()[2:]:
+            w = line.split()
+            caches[w[0]] = int(w[1]) * int(w[3])     # active_objs * objsize
+    live = sum(v for k, v in caches.items() if counted(k))
+    pcp = 0
+    with open("/proc/zoneinfo") as f:
+        for line in f:
+            w = line.split()
+            if len(w) == 2 and w[0] == "count:":
+                pcp += int(w[1])
+    avail = vals["MemAvailable"] + pcp * os.sysconf("SC_PAGE_SIZE")
+    return live, avail, caches, vals["SUnreclaim"]
+
+
+class LeakMeter:
+    """Snapshots after the warm-up, half way and at the end of CYCLES."""
+
+    def __init__(self, cycles):
+        self.cycles = cycles
+        self.warmup = min(20, cycles // 4)
+        self.mid = self.warmup + (cycles - self.warmup) // 2
+        self.snaps = {}
+
+    def after(self, cycle):
+        """Call after cycle number CYCLE (from 0) has ended."""
+        n = cycle + 1
+        if n in (self.warmup, self.mid, self.cycles) and n not in self.snaps:
+            self.snaps[n] = meminfo()
+
+    def check(self, slab_per_cycle, avail_per_cycle, what):
+        """Report both halves and check the bounds (bytes per cycle); a run
+        cut short (fewer snapshots) fails."""
+        w, m, e = self.warmup, self.mid, self.cycles
+        if not check("leak measure over %d cycles of %s: all three snapshots taken" % (e, what),
+                     e > m > w > 0 and all(k in self.snaps for k in (w, m, e)),
+                     "cycles %d, snapshots after %s" % (e, sorted(self.snaps))):
+            return
+        base, mid, end = self.snaps[w], self.snaps[m], self.snaps[e]
+        for name, a, b, n in (("first", base, mid, m - w), ("second", mid, end, e - m)):
+            info("leak measure, %s half (%d cycles): live kmalloc+kernfs objects %+.0f B/cycle, "
+                 "MemAvailable+pcp %+.0f B/cycle, SUnreclaim %+.0f B/cycle"
+                 % (name, n, (b[0] - a[0]) / n, (b[1] - a[1]) / n, (b[3] - a[3]) / n))
+        grew = sorted(((end[2].get(k, 0) - base[2].get(k, 0), k) for k in end[2]), reverse=True)
+        info("live slab objects grown most since the warm-up: " +
+             ", ".join("%s %+d B" % (k, d) for d, k in grew[:5]))
+        slab = (end[0] - mid[0]) / (e - m)
+        avail = min((base[1] - mid[1]) / (m - w), (mid[1] - end[1]) / (e - m))
+        check("live kmalloc+kernfs objects grow less than %d B per cycle (%+.0f)"
+              % (slab_per_cycle, slab), slab < slab_per_cycle)
+        check("MemAvailable (+ per-CPU lists) shrinks less than %d B per cycle "
+              "in one half at least (%+.0f)" % (avail_per_cycle, -avail),
+              avail < avail_per_cycle)
