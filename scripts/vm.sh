@@ -140,6 +140,10 @@ make_initrd() {
 		[ ! -e "$stage/prukit/lib/${lib##*/}" ] || die "guest library ${lib##*/} twice"
 		install -m 0644 "$lib" "$stage/prukit/lib/"
 	done
+	# The udev rules, as make install puts them (udev runs only when a
+	# test starts it: drivers/ws281x/tests/vm/cases/80-ws281x-cycles)
+	make -s -C "$PRUKIT_TOP" udev_install DESTDIR="$stage" >/dev/null ||
+		die "make udev_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{
