@@ -32,7 +32,11 @@ set -euo pipefail
 
 need_pkgs qemu-system-arm device-tree-compiler cpio gzip kmod tar sigrok-cli
 
-VM_TIMEOUT=${VM_TIMEOUT:-900}
+# One boot runs every VM test of a kernel: about 8 minutes on an idle
+# 2-core machine, but over 15 when the host's CPUs are shared (measured with
+# 55% steal time: 6.12 took 749 s in its tests alone).  The bound is for a
+# hung guest, not a slow one.
+VM_TIMEOUT=${VM_TIMEOUT:-2400}
 VM_MEM=${VM_MEM:-1024}
 VM_CPUS=${VM_CPUS:-2}
 VMDIR=$PRUKIT_TOP/tests/vm
