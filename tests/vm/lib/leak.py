@@ -67,6 +67,26 @@ def meminfo():
     return live, avail, caches, vals["SUnreclaim"]
 
 
+def user_processes():
+    """The comm of every userspace process (kernel threads have no
+    cmdline), counted: memory a daemon left running (a udevd handling the
+    cycles' uevents) shows in MemAvailable too."""
+    seen = {}
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open("/proc/%s/cmdline" % pid, "rb") as f:
+                if not f.read(1):
+                    continue
+            with open("/proc/%s/comm" % pid) as f:
+                comm = f.read().strip()
+        except OSError:
+            continue
+        seen[comm] = seen.get(comm, 0) + 1
+    return ", ".join("%s x%d" % kv if kv[1] > 1 else kv[0] for kv in sorted(seen.items()))
+
+
 class LeakMeter:
     """Snapshots after the warm-up, half way and at the end of CYCLES."""
 
@@ -98,6 +118,7 @@ class LeakMeter:
         grew = sorted(((end[2].get(k, 0) - base[2].get(k, 0), k) for k in end[2]), reverse=True)
         info("live slab objects grown most since the warm-up: " +
              ", ".join("%s %+d B" % (k, d) for d, k in grew[:5]))
+        info("userspace processes at the end: " + user_processes())
         slab = (end[0] - mid[0]) / (e - m)
         avail = min((base[1] - mid[1]) / (m - w), (mid[1] - end[1]) / (e - m))
         check("live kmalloc+kernfs objects grow less than %d B per cycle (%+.0f)"
