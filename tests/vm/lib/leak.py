@@ -67,20 +67,29 @@ def meminfo():
     return live, avail, caches, vals["SUnreclaim"]
 
 
+def processes():
+    """(pid, comm, state) of every process there is."""
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % pid) as f:
+                stat = f.read()
+        except OSError:
+            continue
+        yield int(pid), stat[stat.index("(") + 1:stat.rindex(")")], stat[stat.rindex(")") + 2]
+
+
 def user_processes():
     """The comm of every userspace process (kernel threads have no
     cmdline), counted: memory a daemon left running (a udevd handling the
     cycles' uevents) shows in MemAvailable too."""
     seen = {}
-    for pid in os.listdir("/proc"):
-        if not pid.isdigit():
-            continue
+    for pid, comm, _ in processes():
         try:
-            with open("/proc/%s/cmdline" % pid, "rb") as f:
+            with open("/proc/%d/cmdline" % pid, "rb") as f:
                 if not f.read(1):
                     continue
-            with open("/proc/%s/comm" % pid) as f:
-                comm = f.read().strip()
         except OSError:
             continue
         seen[comm] = seen.get(comm, 0) + 1
