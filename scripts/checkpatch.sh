@@ -21,9 +21,9 @@ src=$("$PRUKIT_TOP/scripts/linux-source.sh" 6.1)
 cp=(perl "$src/scripts/checkpatch.pl" --strict --no-tree --terse --show-types --no-summary
     --max-line-length=100 -f)
 
-failed=0
-cd "$PRUKIT_TOP"
-while IFS= read -r f; do
+# check_file FILE: checkpatch's findings on FILE, then its PASS:/FAIL: line.
+check_file() {
+	local f=$1 out ignore
 	case $f in
 	include/compat.h) ignore=(--ignore LINUX_VERSION_CODE,CONSTANT_COMPARISON,DEPRECATED_API) ;;
 	firmware/* | drivers/*/firmware/* | tools/* | tests/prusim/*)
@@ -38,7 +38,26 @@ while IFS= read -r f; do
 	else
 		printf '%s\n' "$out"
 		echo "FAIL: checkpatch $f"
-		failed=1
 	fi
+}
+
+# One checkpatch per CPU at a time (it is single-threaded perl), each
+# file's report in its own file, printed in order once all are done.
+cd "$PRUKIT_TOP"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+n=0
+while IFS= read -r f; do
+	while [ "$(jobs -rp | wc -l)" -ge "$(ncpus)" ]; do
+		wait -n || true
+	done
+	n=$((n + 1))
+	check_file "$f" >"$tmp/$n" 2>&1 &
 done < <(git ls-files --cached --others --exclude-standard -- '*.c' '*.h' | sort)
+wait
+failed=0
+for i in $(seq 1 "$n"); do
+	cat "$tmp/$i"
+	grep -q '^PASS: checkpatch ' "$tmp/$i" || failed=1
+done
 exit $failed
