@@ -8,9 +8,7 @@
 # (C=2) over our sources and fail on any sparse warning in them.  Each build
 # happens in out/kernels/<release>/ so the source tree stays clean.  Prints
 # the vermagic of every module built, and "PASS:/FAIL:" lines.  With
-# --build-only: just the builds (for the VM harness), and none where the
-# last one succeeded from the same sources, script and kernel (out/kernels/
-# <release>/.built holds what they hashed to).
+# --build-only: just the builds (for the VM harness).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -27,36 +25,18 @@ failed=0
 pass() { echo "PASS: $*"; }
 fail() { echo "FAIL: $*"; failed=1; }
 
-# What kbuild needs from the tree, NUL-separated, sorted.
-sources() {
-	(cd "$PRUKIT_TOP" &&
-		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \) \
-			-print0 | sort -z)
-}
-
-# Copy them (and nothing it built before) into a build tree.
+# Copy what kbuild needs (and nothing it built before) into a build tree.
 copy_sources() {
 	local dest=$1
 	rm -rf "$dest"
 	mkdir -p "$dest"
-	sources | (cd "$PRUKIT_TOP" && xargs -0 cp --parents -t "$dest")
-}
-
-# source_key KDIR: a hash of the sources, this script and the kernel built against.
-source_key() {
-	{
-		sources | (cd "$PRUKIT_TOP" && xargs -0 sha256sum)
-		cat "$0" "$1/.config" "$1/Module.symvers" | sha256sum
-	} | sha256sum | cut -c1-16
+	(cd "$PRUKIT_TOP" &&
+		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \) \
+			-print0 | xargs -0 cp --parents -t "$dest")
 }
 
 while read -r series kver kdir _root; do
 	out=$PRUKIT_TOP/out/kernels/$kver
-	key=$(source_key "$kdir")
-	if [ $build_only -eq 1 ] && [ "$(cat "$out/.built" 2>/dev/null)" = "$key" ] &&
-		{ grep -q '^CONFIG_RPMSG=[ym]' "$kdir/.config" || [ -e "$out-rpmsg-kit/Module.symvers" ]; }; then
-		continue
-	fi
 	copy_sources "$out"
 	log=$out/build.log
 	kcflags=-Werror
@@ -74,7 +54,6 @@ while read -r series kver kdir _root; do
 	       W=1 KCFLAGS="$kcflags" "${extra[@]}" -j"$(ncpus)")
 	if "${kmake[@]}" modules >"$log" 2>&1 && ! grep -qi 'warning' "$log"; then
 		pass "build $kver (W=1, -Werror)"
-		echo "$key" >"$out/.built"
 	else
 		grep -iE 'warning|error' "$log" | head -n 30
 		fail "build $kver, see $log"
