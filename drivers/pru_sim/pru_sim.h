@@ -22,6 +22,9 @@
 /* Host interrupts 2..9 of the INTC are wired to the ARM. */
 #define PRU_SIM_FIRST_ARM_HOST	2
 
+/* The IEP's COUNT register, as prusim_host_read() maps the subsystem */
+#define PRU_SIM_IEP_COUNT	0x2e00c
+
 struct irq_domain;
 struct pru_sim;
 
@@ -68,6 +71,8 @@ struct pru_sim_core {
  * @stim: the pattern; @stim.count == 0 means the port reads 0
  * @origin: simulator cycle that the pattern's cycle 0 corresponds to
  * @pending_origin: the pattern starts at the next core start
+ * @origin_iep: the IEP counter at @origin (firmware that reports IEP times,
+ *	as beaglelogic's does, relates them to the pattern with it)
  */
 struct pru_sim_input {
 	struct pru_sim *sim;
@@ -75,6 +80,7 @@ struct pru_sim_input {
 	struct prusim_stim stim;
 	u64 origin;
 	bool pending_origin;
+	u32 origin_iep;
 };
 
 /**

@@ -13,7 +13,8 @@
  *                   the file is closed.  Cycles count from that moment if a
  *                   core runs, else from the next core start.  An empty
  *                   write sets the input to 0.
- *              (r)  the number of entries, period and origin in use
+ *              (r)  the number of entries, period and origin in use, and
+ *                   the IEP counter at the origin
  *   stats      (r)  cycles, instructions, stalls, state and halt reason;
  *                   whether PRU outputs go through pad muxing, and how many
  *                   output changes reached no pad; OCP writes into free pages
@@ -56,6 +57,15 @@ void pru_sim_trace_pin(struct pru_sim *sim, u64 cycle, unsigned int pin, bool le
 		t->dropped++;
 }
 
+/* The IEP counter now (AM335x PRU-ICSS: IEP registers at 0x2e000). */
+static u32 pru_sim_iep_count(struct pru_sim *sim)
+{
+	u32 v = 0;
+
+	prusim_host_read(sim->s, PRU_SIM_IEP_COUNT, &v, sizeof(v));
+	return v;
+}
+
 /* A core was started: the reference point of traces and pending stimuli. */
 void pru_sim_core_started(struct pru_sim *sim)
 {
@@ -66,6 +76,7 @@ void pru_sim_core_started(struct pru_sim *sim)
 	for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
 		if (sim->input[i].pending_origin) {
 			sim->input[i].origin = sim->s->now;
+			sim->input[i].origin_iep = pru_sim_iep_count(sim);
 			sim->input[i].pending_origin = false;
 		}
 	}
@@ -333,6 +344,7 @@ static int pru_sim_input_install(struct pru_sim_input_file *f)
 	in->stim = st;
 	in->pending_origin = !prusim_active(sim->s);
 	in->origin = sim->s->now;
+	in->origin_iep = pru_sim_iep_count(sim);
 	/* The simulator caches inputs until their announced next change. */
 	prusim_input_changed(sim->s, in->port);
 	mutex_unlock(&sim->lock);
@@ -375,8 +387,8 @@ static ssize_t pru_sim_input_read(struct file *file, char __user *buf, size_t le
 	int n;
 
 	mutex_lock(&in->sim->lock);
-	n = scnprintf(text, sizeof(text), "entries %zu period %llu origin %llu%s\n",
-		      in->stim.count, in->stim.period, in->origin,
+	n = scnprintf(text, sizeof(text), "entries %zu period %llu origin %llu iep %u%s\n",
+		      in->stim.count, in->stim.period, in->origin, in->origin_iep,
 		      in->pending_origin ? " (next start)" : "");
 	mutex_unlock(&in->sim->lock);
 	return simple_read_from_buffer(buf, len, ppos, text, n);
