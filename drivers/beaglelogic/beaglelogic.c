@@ -618,7 +618,12 @@ static ssize_t bl_read(struct file *file, char __user *ubuf, size_t count, loff_
 		ret = -EFAULT;
 		goto unlock;
 	}
-	/* the storer may have come round again while we copied */
+	/*
+	 * The storer may have come round again while we copied: look at its
+	 * count only after the copy's loads (rmb(): they are normal memory,
+	 * the count device memory).
+	 */
+	rmb();
 	bl_update(bl);
 	if (bl_overrun(bl, index)) {
 		ret = -EIO;
