@@ -80,3 +80,28 @@ driver_checks() {
 		echo "${d##*/} ${min:-none} $f"
 	done
 }
+
+# prusim_and_images DIR IMAGE... - the prusim host tool (make tools:
+# out/tools/prusim) and the PRU firmware images named (ws281x-pru0.elf ...)
+# built into DIR/fw, a directory of their own: nothing else in out/ moves.
+# The images' build log is DIR/fw.log.  On failure: the log's tail and a
+# FAIL: line, return 1.
+prusim_and_images() {
+	local dir=$1 bin
+	shift
+	if ! make -s -C "$PRUKIT_TOP" tools >"$dir/tools.log" 2>&1; then
+		tail -n 20 "$dir/tools.log"
+		echo "FAIL: make tools (out/tools/prusim)"
+		return 1
+	fi
+	bin=$("$PRUKIT_TOP/scripts/pru-toolchain.sh") || {
+		echo "FAIL: scripts/pru-toolchain.sh"
+		return 1
+	}
+	if ! make -s --no-print-directory -C "$PRUKIT_TOP/firmware" CROSS_COMPILE="$bin/pru-" \
+		O="$dir/fw" "${@/#/$dir/fw/}" >"$dir/fw.log" 2>&1; then
+		tail -n 20 "$dir/fw.log"
+		echo "FAIL: building $*"
+		return 1
+	fi
+}

@@ -20,20 +20,8 @@ command -v python3 >/dev/null || need_pkgs python3
 work=$(mktemp -d "${TMPDIR:-/tmp}/prukit-beaglelogic.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-if ! make -s -C "$PRUKIT_TOP" tools >"$work/tools.log" 2>&1; then
-	tail -n 20 "$work/tools.log"
-	echo "FAIL: make tools (out/tools/prusim)"
-	exit 1
-fi
-bin=$(scripts/pru-toolchain.sh) || { echo "FAIL: scripts/pru-toolchain.sh"; exit 1; }
-# Only the two images, in a directory of their own: nothing else in out/ moves.
+prusim_and_images "$work" beaglelogic-pru0.elf beaglelogic-pru1.elf || exit 1
 fw=$work/fw
-if ! make -s --no-print-directory -C firmware CROSS_COMPILE="$bin/pru-" O="$fw" \
-	"$fw/beaglelogic-pru0.elf" "$fw/beaglelogic-pru1.elf" >"$work/fw.log" 2>&1; then
-	tail -n 20 "$work/fw.log"
-	echo "FAIL: building beaglelogic-pru0.elf and beaglelogic-pru1.elf"
-	exit 1
-fi
 grep '^ *FW ' "$work/fw.log" | sed 's/^ */info: /'
 
 # The ioctl numbers as the original's clients use them (the values of

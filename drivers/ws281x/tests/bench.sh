@@ -58,19 +58,8 @@ awk -v n="${ir[new]}" -v o="${ir[legacy]}" -v leds="$leds" -v arch="$(uname -m)"
 	}'
 
 # 2. The frame, from the real firmware in prusim
-if ! make -s -C "$PRUKIT_TOP" tools >"$out/tools.log" 2>&1; then
-	tail -n 20 "$out/tools.log"
-	echo "FAIL: make tools (out/tools/prusim)"
-	exit 1
-fi
-bin=$(scripts/pru-toolchain.sh) || { echo "FAIL: scripts/pru-toolchain.sh"; exit 1; }
+prusim_and_images "$out" ws281x-pru0.elf ws281x-pru1.elf || exit 1
 fw=$out/fw
-if ! make -s --no-print-directory -C firmware CROSS_COMPILE="$bin/pru-" O="$fw" \
-	"$fw/ws281x-pru0.elf" "$fw/ws281x-pru1.elf" >"$out/fw.log" 2>&1; then
-	tail -n 20 "$out/fw.log"
-	echo "FAIL: building ws281x-pru0.elf and ws281x-pru1.elf"
-	exit 1
-fi
 mkdir -p "$out/run"
 rc=0
 # shellcheck disable=SC2086 # the cores are words

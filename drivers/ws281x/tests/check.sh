@@ -23,20 +23,8 @@ command -v python3 >/dev/null || need_pkgs python3
 work=$(mktemp -d "${TMPDIR:-/tmp}/prukit-ws281x.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
-if ! make -s -C "$PRUKIT_TOP" tools >"$work/tools.log" 2>&1; then
-	tail -n 20 "$work/tools.log"
-	echo "FAIL: make tools (out/tools/prusim)"
-	exit 1
-fi
-bin=$(scripts/pru-toolchain.sh) || { echo "FAIL: scripts/pru-toolchain.sh"; exit 1; }
-# Only the two images, in a directory of their own: nothing else in out/ moves.
+prusim_and_images "$work" ws281x-pru0.elf ws281x-pru1.elf || exit 1
 fw=$work/fw
-if ! make -s --no-print-directory -C firmware CROSS_COMPILE="$bin/pru-" O="$fw" \
-	"$fw/ws281x-pru0.elf" "$fw/ws281x-pru1.elf" >"$work/fw.log" 2>&1; then
-	tail -n 20 "$work/fw.log"
-	echo "FAIL: building ws281x-pru0.elf and ws281x-pru1.elf"
-	exit 1
-fi
 grep '^ *FW ' "$work/fw.log" | sed 's/^ */info: /'
 
 # The uapi header builds in a user program, and its ioctl number is the one
