@@ -5,7 +5,8 @@
 # The module list lives in Kbuild; this file drives kbuild and everything
 # else.  Entry points (stable names):
 #   make / make modules   modules against KDIR (default: the running kernel)
-#   make install          modules, PRU firmware, overlays, udev rule, uapi headers
+#   make install          modules, PRU firmware, overlays, udev rule, uapi headers,
+#                         servers (beaglelogic-tcpd) and their systemd units
 #   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse)
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
 #   make overlays         device-tree overlays (out/overlays/*.dtbo), build only;
@@ -25,12 +26,14 @@ DESTDIR ?=
 FIRMWARE_DIR ?= /lib/firmware
 UDEV_RULES_DIR ?= /etc/udev/rules.d
 INCLUDE_DIR ?= /usr/include
+SBIN_DIR ?= /usr/sbin
+SYSTEMD_UNIT_DIR ?= /lib/systemd/system
 
 BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install headers_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
+	overlays overlays_install udev_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
 
@@ -102,7 +105,22 @@ headers_install:
 	install -d $(DESTDIR)$(INCLUDE_DIR)/prukit
 	install -m 0644 $(CURDIR)/include/uapi/prukit/*.h $(DESTDIR)$(INCLUDE_DIR)/prukit/
 
-install: modules_install firmware_install overlays_install udev_install headers_install
+# Daemons for the board, and their systemd units (not enabled: that is the
+# user's choice).  drivers/beaglelogic/server: the BeagleLogic TCP server.
+SERVERS := drivers/beaglelogic/server/beaglelogic-tcpd
+
+server_install:
+	install -d $(DESTDIR)$(SBIN_DIR) $(DESTDIR)$(SYSTEMD_UNIT_DIR)
+	@for s in $(SERVERS); do \
+		echo "  INSTALL $(SBIN_DIR)/$${s##*/}"; \
+		sed 's|@VERSION@|$(PRUKIT_VERSION)|' $$s >$(DESTDIR)$(SBIN_DIR)/$${s##*/} && \
+		chmod 0755 $(DESTDIR)$(SBIN_DIR)/$${s##*/} && \
+		sed 's|@SBINDIR@|$(SBIN_DIR)|' $$s.service \
+			>$(DESTDIR)$(SYSTEMD_UNIT_DIR)/$${s##*/}.service || exit 1; \
+	done
+
+install: modules_install firmware_install overlays_install udev_install headers_install \
+	server_install
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh

@@ -150,10 +150,11 @@ make_initrd() {
 		[ ! -e "$stage/prukit/lib/${lib##*/}" ] || die "guest library ${lib##*/} twice"
 		install -m 0644 "$lib" "$stage/prukit/lib/"
 	done
-	# The udev rules, as make install puts them (udev runs only when a
-	# test starts it: drivers/ws281x/tests/vm/cases/80-ws281x-cycles)
-	make -s -C "$PRUKIT_TOP" udev_install DESTDIR="$stage" >/dev/null ||
-		die "make udev_install failed"
+	# The udev rules and the servers, as make install puts them (udev runs
+	# only when a test starts it: drivers/ws281x/tests/vm/cases/80-ws281x-cycles;
+	# the servers too: drivers/beaglelogic/tests/vm/cases/82-beaglelogic)
+	make -s -C "$PRUKIT_TOP" udev_install server_install DESTDIR="$stage" >/dev/null ||
+		die "make udev_install server_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{
