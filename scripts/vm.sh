@@ -69,8 +69,8 @@ build_prukit() {
 
 # The device tree: the kernel's own vexpress-a15 tree, the simulated
 # PRU-ICSS and board (tests/vm/overlays, which carry a BeagleBone tree's
-# labels), then every overlay that "make overlays_install" ships, exactly
-# those blobs, then the user's own overlays (make vmrun OVERLAY=...: space
+# labels), then every overlay that "make overlays_install" ships for the
+# Black, exactly those blobs, then the user's own overlays (make vmrun OVERLAY=...: space
 # separated .dtso paths in $PRUKIT_VM_OVERLAYS).  QEMU adds its virtio-mmio
 # nodes when it boots.
 make_dtb() {
@@ -87,8 +87,14 @@ make_dtb() {
 			die "cannot build overlay $o"
 		overlays+=("$dir/$name.dtbo")
 	done
+	local src boards
 	for o in "$PRUKIT_TOP"/out/overlays/*.dtbo; do
 		[ -e "$o" ] || die "no shipped overlays in out/overlays (make overlays)"
+		# the simulated board is a Black: not the overlays made for
+		# other boards only ("prukit-boards:" without am335x-boneblack)
+		src=$PRUKIT_TOP/overlays/$(basename "$o" .dtbo).dtso
+		boards=$(sed -n 's/^ \* prukit-boards://p' "$src" 2>/dev/null)
+		[ -z "$boards" ] || [[ " $boards " == *" am335x-boneblack "* ]] || continue
 		overlays+=("$o")
 	done
 	for o in ${PRUKIT_VM_OVERLAYS:-}; do

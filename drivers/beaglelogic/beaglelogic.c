@@ -3,11 +3,13 @@
  * beaglelogic - a logic analyzer on the BeagleBone's PRUs, compatible with
  * the original BeagleLogic's /dev/beaglelogic
  *
- * One "prukit,beaglelogic" node: PRU0 (the storer) and PRU1 (the sampler)
- * in "ti,prus", running the beaglelogic firmware (beaglelogic_proto.h), and
- * the storer's event in "interrupts-extended".  PRU1 samples R31 bits 0..13
- * (8-bit units: 0..7) at 100 MHz / n, PRU0 writes the samples into a ring
- * of buffers in DDR and raises an event per full buffer.
+ * One "prukit,beaglelogic" node: the storer's and the sampler's PRU in
+ * "ti,prus" (PRU0 and PRU1 on a BeagleBone Black, PRU1 and PRU0 on a
+ * PocketBeagle), running the beaglelogic firmware (beaglelogic_proto.h),
+ * and the storer's event in "interrupts-extended".  The sampler samples
+ * its R31 bits 0..15 (8-bit units: 0..7) at 100 MHz / n, the storer writes
+ * the samples into a ring of buffers in DDR and raises an event per full
+ * buffer; with a trigger (prukit's) the storer runs the ring until it came.
  *
  * Users see what the original offered, names, numbers and quirks included
  * (Documentation/beaglelogic.rst), so that libsigrok's beaglelogic driver
@@ -52,8 +54,8 @@
 #include "uapi/prukit/beaglelogic.h"
 #include "beaglelogic_proto.h"
 
-#define BL_STORER		0	/* PRU0, "ti,prus" entry 0 */
-#define BL_SAMPLER		1	/* PRU1, entry 1 */
+#define BL_STORER		0	/* "ti,prus" entry 0 (Black: PRU0) */
+#define BL_SAMPLER		1	/* entry 1 (Black: PRU1) */
 #define BL_CORES		2
 
 #define BL_MAX_RATE		100000000u
@@ -63,8 +65,27 @@
 #define BL_DEFAULT_BUFS		2
 /* prukit's own version number of the interface, for IOCTL_BL_GET_VERSION */
 #define BL_DRV_VERSION		0x00010002u
+/* R31 bits a 16-bit sample holds: what a trigger may look at */
+#define BL_CHANNELS		16
 /* lasterror when a continuous reader fell a whole ring behind */
 #define BL_ERR_OVERRUN		0x10000u
+
+/* The trigger attribute's kinds (the firmware picks how to look for them) */
+enum bl_trig_kind {
+	BL_TRIGGER_NONE,
+	BL_TRIGGER_RISING,
+	BL_TRIGGER_FALLING,
+	BL_TRIGGER_EDGE,
+	BL_TRIGGER_PATTERN,
+};
+
+static const char * const bl_trig_names[] = {
+	[BL_TRIGGER_NONE] = "none",
+	[BL_TRIGGER_RISING] = "rising",
+	[BL_TRIGGER_FALLING] = "falling",
+	[BL_TRIGGER_EDGE] = "edge",
+	[BL_TRIGGER_PATTERN] = "pattern",
+};
 
 /**
  * struct bl_buf - one capture buffer
@@ -107,6 +128,17 @@ struct bl_buf {
  * @synced: of those, the ones synced for the CPU
  * @rpos: the reader's position, bytes since the capture's start
  * @lasterror: the last error, as the original reports it
+ * @trig_kind: the trigger (prukit's), enum bl_trig_kind
+ * @trig_chan: its channel (edges)
+ * @trig_mask: its mask (patterns)
+ * @trig_value: its value (patterns)
+ * @pretrigger: samples to keep from before the trigger, at least
+ * @trig_on: the capture runs until the trigger (one-shot and a trigger set)
+ * @trig_pre: blocks the storer keeps from before the trigger's block
+ * @trig_start: the sample (counted from the capture's first) read() begins
+ *	with, once the trigger came
+ * @trig_sample: the trigger's sample in what read() returns, -1 if none
+ * @cap_div: the capture's divisor (100 MHz / samplerate)
  * @misc: /dev/beaglelogic
  */
 struct beaglelogic {
@@ -136,6 +168,16 @@ struct beaglelogic {
 	u32 synced;
 	u64 rpos;
 	u32 lasterror;
+	u32 trig_kind;
+	u32 trig_chan;
+	u32 trig_mask;
+	u32 trig_value;
+	u32 pretrigger;
+	bool trig_on;
+	u32 trig_pre;
+	u64 trig_start;
+	s64 trig_sample;
+	u32 cap_div;
 	struct miscdevice misc;
 };
 
@@ -219,6 +261,124 @@ static int bl_command(struct beaglelogic *bl, unsigned int core, u16 opcode)
 	}
 }
 
+/* --- triggers ------------------------------------------------------------ */
+
+static u32 bl_sample_bytes(struct beaglelogic *bl)
+{
+	return bl->unit == BL_SAMPLEUNIT_8_BITS ? 1 : 2;
+}
+
+/* Sample @n of the capture (counted from its first), still in the ring */
+static u32 bl_sample_at(struct beaglelogic *bl, u64 n)
+{
+	u32 ring = bl->nbufs * bl->bufunitsize, off;
+	const void *p;
+
+	div_u64_rem(n * bl_sample_bytes(bl), ring, &off);
+	p = bl->bufs[off / bl->bufunitsize].va + off % bl->bufunitsize;
+	return bl_sample_bytes(bl) == 1 ? *(const u8 *)p : le16_to_cpup(p);
+}
+
+/* Sample @cur, after @prev, is the trigger's */
+static bool bl_trig_hit(struct beaglelogic *bl, u32 prev, u32 cur)
+{
+	u32 bit = BIT(bl->trig_chan);
+
+	switch (bl->trig_kind) {
+	case BL_TRIGGER_RISING:
+		return !(prev & bit) && (cur & bit);
+	case BL_TRIGGER_FALLING:
+		return (prev & bit) && !(cur & bit);
+	case BL_TRIGGER_EDGE:
+		return (prev ^ cur) & bit;
+	default:
+		return (cur & bl->trig_mask) == bl->trig_value;
+	}
+}
+
+/*
+ * A triggered capture ended: the storer says which block held the trigger,
+ * the samples say which sample (an edge's first sample after it; the first
+ * sample of a pattern's run, which may begin before the samples the storer
+ * looks at: bl_store.S).  With @lock held.
+ */
+static void bl_trig_done(struct beaglelogic *bl)
+{
+	u32 spb = BL_BLOCK_BYTES / bl_sample_bytes(bl), block, i;
+	u64 first, start, n;
+
+	block = bl_read_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_block));
+	if (block <= bl->trig_pre) {
+		dev_err(bl->dev, "the storer ended without a trigger (block %u)\n", block);
+		bl->fw_done = false;
+		bl->fw_error = true;
+		return;
+	}
+	/* the last buffer is not a full one: sync every buffer */
+	for (i = 0; i < bl->nbufs; i++)
+		dma_sync_single_for_cpu(bl->dev, bl->bufs[i].dma, bl->bufunitsize,
+					DMA_FROM_DEVICE);
+	first = (u64)(block - 1) * spb;
+	start = first - (u64)bl->trig_pre * spb;
+	for (n = first; n < first + spb; n++)
+		if (bl_trig_hit(bl, bl_sample_at(bl, n - 1), bl_sample_at(bl, n)))
+			break;
+	if (n == first + spb) {
+		dev_warn(bl->dev, "no trigger in the block the storer named (%u)\n", block);
+		n = first;
+	}
+	if (bl->trig_kind == BL_TRIGGER_PATTERN)
+		while (n > start && bl_trig_hit(bl, 0, bl_sample_at(bl, n - 1)))
+			n--;
+	bl->trig_start = start;
+	bl->trig_sample = n - start;
+}
+
+/*
+ * The storer's trigger parameters for this capture (beaglelogic_proto.h);
+ * with @lock held.  -EINVAL when the ring cannot hold the samples asked for
+ * before the trigger and one block after it, or the trigger's channel or
+ * pattern does not fit the sample unit.
+ */
+static int bl_trig_setup(struct beaglelogic *bl)
+{
+	u32 bits = 8 * bl_sample_bytes(bl), spb = BL_BLOCK_BYTES / bl_sample_bytes(bl);
+	u32 blocks = bl->nbufs * (bl->bufunitsize / BL_BLOCK_BYTES);
+	u32 rep = bits == 8 ? 0x01010101 : 0x00010001;
+	u32 mode, lanes, bit;
+
+	/*
+	 * Whole blocks; a pattern's run may begin a few samples before the
+	 * block it was seen in (bl_trig_done()): one block more.
+	 */
+	bl->trig_pre = max_t(u32, DIV_ROUND_UP(bl->pretrigger, spb), 1) +
+		       (bl->trig_kind == BL_TRIGGER_PATTERN);
+	if (bl->trig_pre + 2 > blocks)
+		return -EINVAL;
+	if (bl->trig_kind == BL_TRIGGER_PATTERN) {
+		if (bl->trig_mask >> bits)
+			return -EINVAL;
+		mode = bits == 8 ? BL_TRIG_PATTERN8 :
+		       bl->cap_div == 1 ? BL_TRIG_PATTERN16_HALF : BL_TRIG_PATTERN16;
+		lanes = bl->trig_mask * rep;
+		bit = bl->trig_value * rep;
+	} else {
+		if (bl->trig_chan >= bits)
+			return -EINVAL;
+		mode = bl->trig_kind == BL_TRIGGER_RISING ? BL_TRIG_RISING :
+		       bl->trig_kind == BL_TRIGGER_FALLING ? BL_TRIG_FALLING : BL_TRIG_EDGE;
+		lanes = BIT(bl->trig_chan) * rep;
+		bit = bl->trig_chan + 32 - bits;
+	}
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_mode), mode);
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_lanes), lanes);
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_bit), bit);
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_pre), bl->trig_pre);
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_post),
+		      blocks - bl->trig_pre - 1);
+	return 0;
+}
+
 /*
  * Look at the capture's progress: buffers filled (each synced for the CPU
  * once), the end of a one-shot capture, errors, a core stopped behind the
@@ -250,6 +410,8 @@ static void bl_update(struct beaglelogic *bl)
 	if (state == BL_FW_DONE) {
 		bl->running = false;
 		bl->fw_done = true;
+		if (bl->trig_on)
+			bl_trig_done(bl);
 	} else if (state == BL_FW_ERROR) {
 		bl->running = false;
 		bl->fw_error = true;
@@ -298,11 +460,23 @@ static int bl_start(struct beaglelogic *bl)
 		return -EBUSY;
 	if (!bl->nbufs)
 		return -ENOMEM;
+	bl->cap_div = BL_MAX_RATE / bl->samplerate;
+	/* a trigger: the ring runs until it came (beaglelogic_proto.h) */
+	bl->trig_on = bl->trig_kind != BL_TRIGGER_NONE && bl->flags == BL_TRIGGERFLAGS_ONESHOT;
+	bl->trig_sample = -1;
+	if (bl->trig_on) {
+		ret = bl_trig_setup(bl);
+		if (ret)
+			return ret;
+	} else {
+		bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, trig_mode), BL_TRIG_NONE);
+	}
 	for (i = 0; i < bl->nbufs; i++)
 		dma_sync_single_for_device(bl->dev, bl->bufs[i].dma, bl->bufunitsize,
 					   DMA_FROM_DEVICE);
 	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, unit), bl->unit);
-	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, mode), bl->flags);
+	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, mode),
+		      bl->trig_on ? BL_MODE_CONTINUOUS : bl->flags);
 	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, nbufs), bl->nbufs);
 	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, bufsize), bl->bufunitsize);
 	bl_write_ctrl(bl, BL_STORER, offsetof(struct bl_ctrl, event), bl->event);
@@ -313,8 +487,7 @@ static int bl_start(struct beaglelogic *bl)
 	if (ret)
 		return ret;
 	bl_write_ctrl(bl, BL_SAMPLER, offsetof(struct bl_ctrl, unit), bl->unit);
-	bl_write_ctrl(bl, BL_SAMPLER, offsetof(struct bl_ctrl, divisor),
-		      BL_MAX_RATE / bl->samplerate);
+	bl_write_ctrl(bl, BL_SAMPLER, offsetof(struct bl_ctrl, divisor), bl->cap_div);
 	ret = bl_command(bl, BL_SAMPLER, BL_CMD_START);
 	if (ret) {
 		bl_command(bl, BL_STORER, BL_CMD_STOP);
@@ -522,9 +695,14 @@ static u32 bl_index(struct beaglelogic *bl, u32 *off)
 	return index;
 }
 
-/* The reader's buffer holds data: filled, and not refilled since. */
+/*
+ * The reader's buffer holds data: filled, and not refilled since; with a
+ * trigger, every buffer once the capture ended (the ring ran until then).
+ */
 static bool bl_ready(struct beaglelogic *bl, u32 index)
 {
+	if (bl->trig_on)
+		return bl->fw_done && index < bl->nbufs;
 	return bl->filled > index;
 }
 
@@ -613,7 +791,17 @@ static ssize_t bl_read(struct file *file, char __user *ubuf, size_t count, loff_
 			ret = 0;
 		goto unlock;
 	}
-	n = min_t(size_t, count, bl->bufunitsize - off);
+	if (bl->trig_on) {
+		/* from the trigger's block - trig_pre on, round the ring */
+		u32 ring = bl->nbufs * bl->bufunitsize, at;
+
+		div_u64_rem(bl->trig_start * bl_sample_bytes(bl) + bl->rpos, ring, &at);
+		index = at / bl->bufunitsize;
+		off = at % bl->bufunitsize;
+		n = min_t(u64, min_t(size_t, count, bl->bufunitsize - off), ring - bl->rpos);
+	} else {
+		n = min_t(size_t, count, bl->bufunitsize - off);
+	}
 	if (copy_to_user(ubuf, bl->bufs[index % bl->nbufs].va + off, n)) {
 		ret = -EFAULT;
 		goto unlock;
@@ -1010,24 +1198,113 @@ static ssize_t filltestpattern_store(struct device *dev, struct device_attribute
 static DEVICE_ATTR_WO(filltestpattern);
 
 /*
- * prukit's: the IEP counter at the first sample of the last capture that
- * ended (the sampler writes it when it stops).
+ * prukit's: the IEP counter at the first sample read() returns of the last
+ * capture that ended (the sampler writes its first sample's when it stops;
+ * a triggered capture's read() begins trig_start samples later, each
+ * 2 * divisor cycles of the counter).
  */
 static ssize_t first_sample_iep_show(struct device *dev, struct device_attribute *attr,
 				     char *buf)
 {
 	struct beaglelogic *bl = bl_from_dev(dev);
 	ssize_t ret;
+	u32 iep;
 
 	mutex_lock(&bl->lock);
 	ret = bl_dead(bl);
-	if (!ret)
-		ret = sysfs_emit(buf, "%u\n",
-				 bl_read_ctrl(bl, BL_SAMPLER, offsetof(struct bl_ctrl, first_iep)));
+	if (!ret) {
+		bl_update(bl);
+		iep = bl_read_ctrl(bl, BL_SAMPLER, offsetof(struct bl_ctrl, first_iep));
+		if (bl->trig_on && bl->trig_sample >= 0)
+			iep += (u32)(bl->trig_start * 2 * bl->cap_div);
+		ret = sysfs_emit(buf, "%u\n", iep);
+	}
 	mutex_unlock(&bl->lock);
 	return ret;
 }
 static DEVICE_ATTR_RO(first_sample_iep);
+
+/*
+ * prukit's trigger: "none", "rising N", "falling N", "edge N" (channel N),
+ * or "pattern MASK VALUE" (the channels in MASK equal to VALUE's).
+ */
+static ssize_t trigger_show(struct device *dev, struct device_attribute *attr, char *buf)
+{
+	struct beaglelogic *bl = bl_from_dev(dev);
+	ssize_t ret;
+
+	mutex_lock(&bl->lock);
+	if (bl->trig_kind == BL_TRIGGER_NONE)
+		ret = sysfs_emit(buf, "none\n");
+	else if (bl->trig_kind == BL_TRIGGER_PATTERN)
+		ret = sysfs_emit(buf, "pattern 0x%04x 0x%04x\n", bl->trig_mask, bl->trig_value);
+	else
+		ret = sysfs_emit(buf, "%s %u\n", bl_trig_names[bl->trig_kind], bl->trig_chan);
+	mutex_unlock(&bl->lock);
+	return ret;
+}
+
+static ssize_t trigger_store(struct device *dev, struct device_attribute *attr,
+			     const char *buf, size_t count)
+{
+	struct beaglelogic *bl = bl_from_dev(dev);
+	int kind, n, ret, a = 0, b = 0;
+	char word[8], extra;
+
+	n = sscanf(buf, "%7s %i %i %c", word, &a, &b, &extra);
+	kind = n >= 1 ? match_string(bl_trig_names, ARRAY_SIZE(bl_trig_names), word) : -EINVAL;
+	if (kind < 0)
+		return -EINVAL;
+	/* an edge: its channel in a; a pattern: the mask in a, the value in b */
+	if (kind == BL_TRIGGER_NONE ? n != 1 :
+	    kind == BL_TRIGGER_PATTERN ? n != 3 || a <= 0 || a > 0xffff || b < 0 || b & ~a :
+	    n != 2 || a < 0 || a >= BL_CHANNELS)
+		return -EINVAL;
+	mutex_lock(&bl->lock);
+	ret = bl_settable(bl);
+	if (!ret) {
+		bl->trig_kind = kind;
+		bl->trig_chan = kind == BL_TRIGGER_PATTERN ? 0 : a;
+		bl->trig_mask = kind == BL_TRIGGER_PATTERN ? a : 0;
+		bl->trig_value = kind == BL_TRIGGER_PATTERN ? b : 0;
+	}
+	mutex_unlock(&bl->lock);
+	return ret ?: count;
+}
+static DEVICE_ATTR_RW(trigger);
+
+static int bl_set_pretrigger(struct beaglelogic *bl, u32 samples)
+{
+	bl->pretrigger = samples;
+	return 0;
+}
+
+static ssize_t pretrigger_show(struct device *dev, struct device_attribute *attr, char *buf)
+{
+	return sysfs_emit(buf, "%u\n", READ_ONCE(bl_from_dev(dev)->pretrigger));
+}
+
+static ssize_t pretrigger_store(struct device *dev, struct device_attribute *attr,
+				const char *buf, size_t count)
+{
+	return bl_store_u32(dev, buf, count, bl_set_pretrigger);
+}
+static DEVICE_ATTR_RW(pretrigger);
+
+/* prukit's: the trigger's sample in what read() returns, -1 if none yet */
+static ssize_t trigger_sample_show(struct device *dev, struct device_attribute *attr,
+				   char *buf)
+{
+	struct beaglelogic *bl = bl_from_dev(dev);
+	s64 n;
+
+	mutex_lock(&bl->lock);
+	bl_update(bl);
+	n = bl->trig_on ? bl->trig_sample : -1;
+	mutex_unlock(&bl->lock);
+	return sysfs_emit(buf, "%lld\n", n);
+}
+static DEVICE_ATTR_RO(trigger_sample);
 
 static struct attribute *bl_attrs[] = {
 	&dev_attr_samplerate.attr,
@@ -1040,6 +1317,9 @@ static struct attribute *bl_attrs[] = {
 	&dev_attr_lasterror.attr,
 	&dev_attr_filltestpattern.attr,
 	&dev_attr_first_sample_iep.attr,
+	&dev_attr_trigger.attr,
+	&dev_attr_pretrigger.attr,
+	&dev_attr_trigger_sample.attr,
 	NULL
 };
 ATTRIBUTE_GROUPS(bl);
@@ -1136,7 +1416,7 @@ static int bl_probe(struct platform_device *pdev)
 	platform_set_drvdata(pdev, bl);
 
 	if (of_count_phandle_with_args(dev->of_node, "ti,prus", NULL) != BL_CORES)
-		return dev_err_probe(dev, -EINVAL, "\"ti,prus\" must name PRU0 and PRU1\n");
+		return dev_err_probe(dev, -EINVAL, "\"ti,prus\" must name the storer's and the sampler's PRU\n");
 	for (c = 0; c < BL_CORES; c++) {
 		bl->pru[c] = devm_prukit_pru_get(dev, c);
 		if (IS_ERR(bl->pru[c]))
@@ -1162,7 +1442,8 @@ static int bl_probe(struct platform_device *pdev)
 	for (c = 0; c < BL_CORES; c++) {
 		ret = bl_boot(bl, c);
 		if (ret)
-			return dev_err_probe(dev, ret, "PRU%u's firmware does not answer\n", c);
+			return dev_err_probe(dev, ret, "the %s's firmware does not answer\n",
+					     c == BL_STORER ? "storer" : "sampler");
 	}
 	/* A default so that dd works at once; memalloc changes it. */
 	mutex_lock(&bl->lock);

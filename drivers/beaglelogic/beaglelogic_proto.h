@@ -33,6 +33,16 @@
  *	(pru_sim's stimulus origins, in tests).
  *  STOP (PRU0): ends a capture; answered once PRU1 stopped too.  A STOP
  *	without a capture is answered at once.
+ *
+ * Triggers (PRU0, @trig_mode other than BL_TRIG_NONE; with @mode
+ * BL_MODE_CONTINUOUS): the storer fills the ring round and round; after
+ * @trig_pre blocks it looks at every block it stored for the trigger (an
+ * edge of a channel, or a pattern: bl_store.S has the checks and what they
+ * cost); the first block that holds one is @trig_block, and @trig_post
+ * blocks later the capture ends (BL_FW_DONE, with one more event).  So the
+ * ring holds, in capture order from block @trig_block - @trig_pre, every
+ * block from @trig_pre before the trigger's to @trig_post after it.  The
+ * driver finds the trigger's sample in block @trig_block.
  */
 #ifndef _BEAGLELOGIC_PROTO_H
 #define _BEAGLELOGIC_PROTO_H
@@ -44,7 +54,7 @@
 #endif
 
 #define BL_MAGIC		0x4c474c42u	/* "BLGL" */
-#define BL_VERSION		1
+#define BL_VERSION		2
 
 #define BL_MAX_BUFS		128
 #define BL_BLOCK_BYTES		32	/* a buffer is a multiple of this */
@@ -76,6 +86,17 @@
 #define BL_CMD_START		1
 #define BL_CMD_STOP		2
 
+/* @trig_mode: what the storer looks for in each block */
+#define BL_TRIG_NONE		0
+#define BL_TRIG_RISING		1	/* channel bit @trig_bit goes 0 -> 1 */
+#define BL_TRIG_FALLING		2	/* 1 -> 0 */
+#define BL_TRIG_EDGE		3	/* either */
+#define BL_TRIG_PATTERN8	4	/* (sample & mask) == value, every 8-bit sample */
+#define BL_TRIG_PATTERN16	5	/* every 16-bit sample */
+/* 16-bit samples 0, 1, 4, 5, 8, 9, 12, 13 of a block: 100 Msps leaves no time for all */
+#define BL_TRIG_PATTERN16_HALF	6
+#define BL_TRIG_MAX		BL_TRIG_PATTERN16_HALF
+
 /* Results */
 #define BL_OK			0
 #define BL_EINVAL		1	/* a parameter out of range */
@@ -101,6 +122,17 @@
  * @first_iep: PRU1: the IEP counter at the first sample of the last capture
  *	(written when it ended)
  * @bufs: START (PRU0): bus addresses of the buffers, in capture order
+ * @trig_mode: START (PRU0): BL_TRIG_*
+ * @trig_lanes: START (PRU0): edges: the channel's bit in each sample of a
+ *	32-bit word (8-bit units: 4 samples a word, 16-bit: 2); patterns: the
+ *	mask, in each sample of a word
+ * @trig_bit: START (PRU0): edges: the channel's bit in the last sample of
+ *	a word (8-bit: channel + 24, 16-bit: channel + 16); patterns: the
+ *	value (within the mask) in each sample of a word
+ * @trig_pre: START (PRU0): blocks stored before the storer looks, >= 1
+ * @trig_post: START (PRU0): blocks stored after the trigger's, >= 1
+ * @trig_block: PRU0: the block (numbered from 1) that held the trigger, 0
+ *	while none did
  */
 struct bl_ctrl {
 	struct prukit_ctrl_hdr hdr;
@@ -115,6 +147,12 @@ struct bl_ctrl {
 	__u32 filled;
 	__u32 first_iep;
 	__u32 bufs[BL_MAX_BUFS];
+	__u32 trig_mode;
+	__u32 trig_lanes;
+	__u32 trig_bit;
+	__u32 trig_pre;
+	__u32 trig_post;
+	__u32 trig_block;
 } __packed __aligned(4);
 #endif
 
@@ -126,5 +164,8 @@ struct bl_ctrl {
 #define BL_CTRL_FILLED		48
 #define BL_CTRL_FIRST_IEP	52
 #define BL_CTRL_BUFS		56
+#define BL_CTRL_TRIG_MODE	(BL_CTRL_BUFS + 4 * BL_MAX_BUFS)	/* 568 */
+#define BL_CTRL_TRIG_POST	(BL_CTRL_TRIG_MODE + 16)
+#define BL_CTRL_TRIG_BLOCK	(BL_CTRL_TRIG_MODE + 20)
 
 #endif /* _BEAGLELOGIC_PROTO_H */

@@ -27,6 +27,9 @@ static_assert(offsetof(struct bl_ctrl, error) == BL_CTRL_ERROR, "bl_*.S: ctrl la
 static_assert(offsetof(struct bl_ctrl, filled) == BL_CTRL_FILLED, "bl_*.S: ctrl layout");
 static_assert(offsetof(struct bl_ctrl, first_iep) == BL_CTRL_FIRST_IEP, "bl_*.S: ctrl layout");
 static_assert(offsetof(struct bl_ctrl, bufs) == BL_CTRL_BUFS, "bl_*.S: ctrl layout");
+static_assert(offsetof(struct bl_ctrl, trig_mode) == BL_CTRL_TRIG_MODE, "bl_*.S: ctrl layout");
+static_assert(offsetof(struct bl_ctrl, trig_post) == BL_CTRL_TRIG_POST, "bl_*.S: ctrl layout");
+static_assert(offsetof(struct bl_ctrl, trig_block) == BL_CTRL_TRIG_BLOCK, "bl_*.S: ctrl layout");
 
 /* The image initialises the header: the driver checks it right after loading. */
 struct bl_ctrl bl_ctrl __attribute__((section(".prukit_ctrl"), used)) = {
@@ -138,6 +141,12 @@ static uint32_t check_start(volatile struct bl_ctrl *c)
 	for (i = 0; i < c->nbufs; i++)
 		if (!c->bufs[i] || c->bufs[i] % BL_BLOCK_BYTES)
 			return BL_EINVAL;
+	/* a trigger: a ring that keeps what comes before it and after it */
+	if (c->trig_mode > BL_TRIG_MAX ||
+	    (c->trig_mode != BL_TRIG_NONE &&
+	     (c->mode != BL_MODE_CONTINUOUS || !c->trig_pre || !c->trig_post ||
+	      c->trig_pre + c->trig_post + 1 != c->nbufs * (c->bufsize / BL_BLOCK_BYTES))))
+		return BL_EINVAL;
 	return BL_OK;
 }
 
@@ -180,6 +189,7 @@ int main(void)
 			}
 			c->filled = 0;
 			c->error = BL_ERR_NONE;
+			c->trig_block = 0;
 			/* bl_store() sets @state and answers once the banks are clear */
 			res = bl_store(c, PRUKIT_CTRL_STATUS(seq, BL_OK));
 			/* the capture ends for the driver once the sampler stopped */

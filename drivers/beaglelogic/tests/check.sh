@@ -4,12 +4,13 @@
 # drivers/beaglelogic/tests/check.sh - make check's step driver-beaglelogic:
 # the uapi header's ioctl numbers are BeagleLogic's, and the firmware
 # (beaglelogic-pru0.elf, beaglelogic-pru1.elf) runs in the prusim host tool:
-# every path of the sampler, one-shot and continuous, each sample checked
-# against the stimulus (bl_sim.py says what is checked).  Builds what it
-# needs (prusim, the PRU toolchain, the two images) from a clean clone.
-# Prints PASS:/FAIL: lines; exits non-zero on any failure.
+# every path of the sampler, one-shot and continuous, the PocketBeagle's
+# swapped roles, each sample checked against the stimulus, and the storer's
+# triggers (bl_sim.py says what is checked).  Builds what it needs (prusim,
+# the PRU toolchain, the two images) from a clean clone.  Prints PASS:/FAIL:
+# lines; exits non-zero on any failure.
 #
-# prukit-check-min: 54
+# prukit-check-min: 117
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"

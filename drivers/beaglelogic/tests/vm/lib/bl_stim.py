@@ -117,3 +117,19 @@ def serial_expected(t0, step, count):
         c = (t0 + k * step) % SERIAL_PERIOD
         out.append(changes[bisect.bisect_right(cycles, c) - 1][1])
     return out
+
+
+# --- a stimulus for the triggers -----------------------------------------------------
+# The LFSR of values(), but bits 6, 7, 12 and 13 (channels P8_40, P8_39,
+# P8_21, P8_20) low, except from cycle TRIG_AT for TRIG_LEN cycles of each
+# period, where they are all high: one rising edge (TRIG_AT), one falling
+# edge (TRIG_AT + TRIG_LEN) and one run of the pattern per period.
+TRIG_BITS = 0x30c0
+TRIG_AT = 40000
+TRIG_LEN = 40
+
+
+def trigger_values():
+    """The trigger stimulus' value in each cycle of one period."""
+    return [(v & ~TRIG_BITS) | (TRIG_BITS if TRIG_AT <= i < TRIG_AT + TRIG_LEN else 0)
+            for i, v in enumerate(values())]
