@@ -14,6 +14,10 @@
 #     convert a frame (callgrind, host build of drivers/ws281x/ws281x_conv.c)
 #     and the PRU cycles and frames per second of the real firmware in
 #     prusim (exact; drivers/ws281x/tests/bench.sh)
+#   - beaglelogic: PRU cycles between two samples at each rate and the
+#     trigger position error (exact, prusim), and the largest one-shot
+#     100 Msps capture with zero loss in the VM
+#     (drivers/beaglelogic/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 set -euo pipefail
@@ -28,6 +32,10 @@ sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exa
 "$PRUKIT_TOP/drivers/ws281x/tests/bench.sh" >"$PRUKIT_TOP/out/ws281x-bench.log" 2>&1 ||
 	die "drivers/ws281x/tests/bench.sh failed; see out/ws281x-bench.log"
 grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
+"$PRUKIT_TOP/drivers/beaglelogic/tests/bench.sh" >"$PRUKIT_TOP/out/beaglelogic-bench.log" 2>&1 ||
+	{ grep -E '^(FAIL|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log" || true
+	  die "drivers/beaglelogic/tests/bench.sh failed; see out/beaglelogic-bench.log"; }
+grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
 out=$PRUKIT_TOP/out/bench
 "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out" 2>&1 |
 	grep -E '^(BENCH|INFO):' || true

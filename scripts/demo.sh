@@ -11,7 +11,11 @@
 #    overlay's string on P9_29 as a Linux LED (rgb:status-0, the timer
 #    trigger), then an animation written to /dev/ws281xN on the four strings
 #    of the test controller ws281x-mix (both PRUs, R30 and GPIO pins, an RGBW
-#    string).
+#    string);
+#  - prukit's beaglelogic driver (tests/vm/demo/logic): sigrok-cli -d
+#    beaglelogic captures a UART line and an SPI bus into a session
+#    (logic.sr, for PulseView), which sigrok's uart and spi decoders
+#    decode and tools/logic-show.py draws (logic-uart.png, logic-spi.png).
 #
 # What the simulated pins did is decoded by sigrok's rgb_led_ws281x decoder
 # (GRB strings; the others by tools/ws281x-show.py's own decoder, which must
@@ -75,9 +79,47 @@ echo "ws281x-show.py's decoder, the RGBW, RGB and BRG strings by ws281x-show.py'
 	--pin P8_42:rgb:5 --pin gpio2_2:brg:3 \
 	--strip "$out/ws281x-strings.png" --gif "$out/ws281x-strings.gif" --delay 120 \
 	--expect "$out/ws281x-strings.sent"
+
+# prukit's beaglelogic driver: the session sigrok-cli saved in the guest
+echo
+echo "prukit's beaglelogic driver: sigrok-cli -d beaglelogic captured a UART line (P8_45,"
+echo "1 Mbaud) and an SPI bus (P8_44 CS#, P8_46 SCLK, P8_43 MOSI, P8_41 MISO; 2 MHz) at"
+echo "20 MHz; every sample checked against the stimulus, and sigrok's uart and spi decoders"
+echo "must print exactly the bytes sent:"
+read -r t0 step <"$out/logic.txt"
+python3 "$PRUKIT_TOP/drivers/beaglelogic/tests/bl_decode.py" "$out/logic.sr" "$t0" "$step"
+chans=(--channel P8_45=UART --channel P8_44=SPI_CS# --channel P8_46=SPI_SCLK
+	--channel P8_43=SPI_MOSI --channel P8_41=SPI_MISO)
+uart=(--decode "uart:rx=P8_45:baudrate=1000000@rx-data@UART")
+spi=(--decode "spi:clk=P8_46:mosi=P8_43:miso=P8_41:cs=P8_44@mosi-data@MOSI"
+	--decode "spi:clk=P8_46:mosi=P8_43:miso=P8_41:cs=P8_44@miso-data@MISO")
+echo
+echo "decoded by sigrok's uart and spi decoders:"
+/usr/bin/python3 "$PRUKIT_TOP/tools/logic-show.py" "$out/logic.sr" "${chans[@]}" "${uart[@]}" \
+	"${spi[@]}" --png "$out/logic.png"
+# the first whole period of the stimulus, and its SPI transfers up close:
+# the samples where they begin, and their lengths
+read -r period_at period_n spi_at spi_n < <(python3 - "$t0" "$step" <<PY
+import sys
+sys.path.insert(0, "$PRUKIT_TOP/drivers/beaglelogic/tests/vm/lib")
+import bl_stim
+t0, step = int(sys.argv[1]), int(sys.argv[2])
+p = bl_stim.SERIAL_PERIOD
+spi = [f for f in bl_stim.serial_events()[0] if f[0] == "spi"]
+at = ((p - t0 % p) % p + step - 1) // step
+print(at, p // step, at + (spi[0][1] - 400) // step, (spi[-1][2] - spi[0][1] + 800) // step)
+PY
+)
+/usr/bin/python3 "$PRUKIT_TOP/tools/logic-show.py" "$out/logic.sr" "${chans[@]}" "${uart[@]}" \
+	--from "$period_at" --samples "$period_n" --png "$out/logic-uart.png" >/dev/null
+/usr/bin/python3 "$PRUKIT_TOP/tools/logic-show.py" "$out/logic.sr" "${chans[@]}" "${spi[@]}" \
+	--from "$spi_at" --samples "$spi_n" --png "$out/logic-spi.png" >/dev/null
+
 echo
 msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
-	"$out/neopixel-led0.png; VCD for PulseView/GTKWave: $out/neopixel.vcd"
+	"$out/neopixel-led0.png, $out/logic-uart.png, $out/logic-spi.png, $out/logic.png;" \
+	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
+	"$out/logic.sr"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \
 	"$out/ws281x-strings.gif, $out/ws281x-strings-wave.png; VCD: $out/ws281x-leds.vcd," \
 	"$out/ws281x-strings.vcd"
