@@ -65,6 +65,8 @@
 #define BL_DEFAULT_BUFS		2
 /* prukit's own version number of the interface, for IOCTL_BL_GET_VERSION */
 #define BL_DRV_VERSION		0x00010002u
+/* The smallest buffer a trigger at 100 Msps keeps up with (bl_trig_setup()) */
+#define BL_TRIG_MIN_BUFUNIT	4096u
 /* R31 bits a 16-bit sample holds: what a trigger may look at */
 #define BL_CHANNELS		16
 /* lasterror when a continuous reader fell a whole ring behind */
@@ -354,6 +356,13 @@ static int bl_trig_setup(struct beaglelogic *bl)
 	bl->trig_pre = max_t(u32, DIV_ROUND_UP(bl->pretrigger, spb), 1) +
 		       (bl->trig_kind == BL_TRIGGER_PATTERN);
 	if (bl->trig_pre + 2 > blocks)
+		return -EINVAL;
+	/*
+	 * At 100 Msps the storer makes up a full buffer's 14 cycles over the
+	 * next blocks' few spare ones (bl_store.S): in prusim an 8-bit pattern
+	 * needs buffers of 512 bytes, a 16-bit one 448, an edge 64.
+	 */
+	if (bl->cap_div == 1 && bl->bufunitsize < BL_TRIG_MIN_BUFUNIT)
 		return -EINVAL;
 	if (bl->trig_kind == BL_TRIGGER_PATTERN) {
 		if (bl->trig_mask >> bits)
@@ -1416,7 +1425,8 @@ static int bl_probe(struct platform_device *pdev)
 	platform_set_drvdata(pdev, bl);
 
 	if (of_count_phandle_with_args(dev->of_node, "ti,prus", NULL) != BL_CORES)
-		return dev_err_probe(dev, -EINVAL, "\"ti,prus\" must name the storer's and the sampler's PRU\n");
+		return dev_err_probe(dev, -EINVAL,
+				     "\"ti,prus\" must list the storer's PRU, then the sampler's\n");
 	for (c = 0; c < BL_CORES; c++) {
 		bl->pru[c] = devm_prukit_pru_get(dev, c);
 		if (IS_ERR(bl->pru[c]))
