@@ -13,7 +13,8 @@ on the session (e.g. uart:rx=P8_45:baudrate=1000000@rx-data@UART) and
 draws each annotation as a box under the waveforms; the decoded bytes are
 printed too, one row per --decode.  The picture needs Debian's python3-pil
 (run with /usr/bin/python3); sigrok-cli and its decoders come from Debian's
-sigrok-cli package."""
+sigrok-cli package.  read_session() and decode() are for other tools too
+(drivers/beaglelogic/tests/bl_decode.py): they raise SessionError."""
 import argparse
 import re
 import subprocess
@@ -23,13 +24,17 @@ import zipfile
 ROW, PAD, LABEL_W = 26, 6, 110
 
 
+class SessionError(Exception):
+    """A session that cannot be read, or a decoder that failed on it."""
+
+
 def read_session(path):
     """(samplerate Hz, unit size, [channel names by bit], samples bytes)."""
     try:
         z = zipfile.ZipFile(path)
         meta = z.read("metadata").decode()
     except (OSError, zipfile.BadZipFile, KeyError) as e:
-        sys.exit("logic-show: %s: not a sigrok session (%s)" % (path, e))
+        raise SessionError("%s: not a sigrok session (%s)" % (path, e)) from e
     unit = int(re.search(r"^unitsize=(\d+)", meta, re.M).group(1))
     m = re.search(r"^samplerate=([\d.]+) *([kMG]?)Hz", meta, re.M)
     rate = float(m.group(1)) * {"": 1, "k": 1e3, "M": 1e6, "G": 1e9}[m.group(2)]
@@ -46,13 +51,13 @@ def decode(path, spec):
     DECODER:OPTIONS@ANNOTATION[@LABEL]."""
     parts = spec.split("@")
     if len(parts) not in (2, 3):
-        sys.exit("logic-show: --decode %s: want DECODER:OPTIONS@ANNOTATION[@LABEL]" % spec)
+        raise SessionError("--decode %s: want DECODER:OPTIONS@ANNOTATION[@LABEL]" % spec)
     decoder, ann = parts[0], parts[1]
     name = decoder.split(":")[0]
     r = subprocess.run(["sigrok-cli", "-i", path, "-P", decoder, "-A", name + "=" + ann,
                         "--protocol-decoder-samplenum"], capture_output=True, text=True)
     if r.returncode:
-        sys.exit("logic-show: sigrok-cli -P %s: %s" % (decoder, r.stderr.strip()))
+        raise SessionError("sigrok-cli -P %s on %s: %s" % (decoder, path, r.stderr.strip()))
     out = []
     for ln in r.stdout.splitlines():
         m = re.match(r"(\d+)-(\d+) \S+: (.*)$", ln)
@@ -82,7 +87,11 @@ def main():
     p.add_argument("--decode", action="append", default=[])
     p.add_argument("--width", type=int, default=1600)
     a = p.parse_args()
-    rate, unit, names, data = read_session(a.session)
+    try:
+        rate, unit, names, data = read_session(a.session)
+        decoded = [decode(a.session, spec) for spec in a.decode]
+    except SessionError as e:
+        sys.exit("logic-show: %s" % e)
     total = len(data) // unit
     start = max(0, min(a.start, total - 1))
     count = min(a.samples or total - start, total - start)
@@ -94,7 +103,6 @@ def main():
             sys.exit("logic-show: no channel %s in %s (it has %s)" %
                      (name, a.session, ", ".join(names[b] for b in sorted(names))))
         rows.append((by_name[name], label or name))
-    decoded = [decode(a.session, spec) for spec in a.decode]
     for label, anns in decoded:
         print("%s: %s" % (label, text_of([t for _, _, t in anns])))
 

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-only
 """The beaglelogic tests' sigrok sessions, on the host: read a session
 (.sr), and check what sigrok's own uart and spi decoders find in a capture
-of bl_stim's serial stimulus.  Used by tests/vm/host/82-beaglelogic and by
+of bl_stim's serial stimulus (tools/logic-show.py reads the session and
+runs the decoders).  Used by tests/vm/host/82-beaglelogic and by
 make demo:
 
     bl_decode.py SESSION T0 STEP
@@ -9,42 +10,36 @@ make demo:
 checks every sample of SESSION (taken STEP cycles apart, the first T0
 cycles after the stimulus' origin) and the decoders' bytes; prints PASS:
 and FAIL: lines, exits 1 on a failure."""
+import importlib.util
 import os
-import re
-import subprocess
 import sys
-import zipfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "vm/lib"))
+HERE = os.path.dirname(os.path.realpath(__file__))
+sys.path.insert(0, os.path.join(HERE, "vm/lib"))
 import bl_stim  # noqa: E402
+
+# tools/logic-show.py reads sessions and runs sigrok's decoders on them
+_spec = importlib.util.spec_from_file_location("logic_show",
+                                               os.path.join(HERE, "../../../tools/logic-show.py"))
+logic_show = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(logic_show)
 
 
 def read_sr(path):
-    """(unit size, samples) of a sigrok session file (srzip: an ini
-    "metadata" and the samples in logic-1-1, logic-1-2, ...)."""
-    with zipfile.ZipFile(path) as z:
-        meta = z.read("metadata").decode()
-        unit = int(re.search(r"^unitsize=(\d+)", meta, re.M).group(1))
-        chunks = sorted((n for n in z.namelist() if n.startswith("logic-1")),
-                        key=lambda n: int(n.rsplit("-", 1)[1]) if n.count("-") == 2 else 0)
-        return unit, b"".join(z.read(n) for n in chunks)
+    """(unit size, samples) of a sigrok session file."""
+    _, unit, _, data = logic_show.read_session(path)
+    return unit, data
 
 
 def decode(path, decoder, ann):
     """sigrok's DECODER on the session PATH: [(first sample, byte)] of its
-    annotation ANN."""
-    r = subprocess.run(["sigrok-cli", "-i", path, "-P", decoder, "-A",
-                        decoder.split(":")[0] + "=" + ann, "--protocol-decoder-samplenum"],
-                       capture_output=True, text=True)
-    if r.returncode:
-        print("sigrok-cli -P %s on %s: %s" % (decoder, os.path.basename(path),
-                                              r.stderr.strip()), flush=True)
+    annotation ANN ([] and a line saying why if sigrok-cli failed)."""
+    try:
+        _, anns = logic_show.decode(path, "%s@%s" % (decoder, ann))
+    except logic_show.SessionError as e:
+        print(e, flush=True)
         return []
-    out = []
-    for ln in r.stdout.splitlines():
-        span, _, val = ln.split()
-        out.append((int(span.split("-")[0]), int(val, 16)))
-    return out
+    return [(first, int(text, 16)) for first, _, text in anns]
 
 
 def check_decoded(check, name, path, t0, step, count):
