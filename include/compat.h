@@ -207,4 +207,99 @@ static inline void prukit_dma_free_noncoherent(struct device *dev, size_t size, 
 }
 #endif
 
+/*
+ * DRM, for the display drivers (hub75), which define PRUKIT_COMPAT_DRM
+ * before including this file: the others do not pull in DRM headers.
+ */
+#ifdef PRUKIT_COMPAT_DRM
+#include <drm/drm_drv.h>
+#include <drm/drm_framebuffer.h>
+#include <drm/drm_gem_framebuffer_helper.h>
+#include <drm/drm_plane.h>
+
+/*
+ * v5.11: devm_drm_dev_alloc() takes a const struct drm_driver ("drm:
+ * Constify struct drm_driver"; 5.10 writes nothing to it either).
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#define PRUKIT_DRM_DRIVER_CONST		const
+#else
+#define PRUKIT_DRM_DRIVER_CONST
+#endif
+
+/* v6.14: struct drm_driver lost .date ("drm: remove driver date from struct drm_driver") */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 14, 0)
+#define PRUKIT_DRM_DRIVER_DATE(d)
+#else
+#define PRUKIT_DRM_DRIVER_DATE(d)	.date = (d),
+#endif
+
+/*
+ * The plane's framebuffer memory for the CPU.  v5.12 added shadow-plane
+ * helpers ("drm/gem: Export helpers for shadow-buffered planes"): they map
+ * the BOs before the update (map[], the BO's start; data[] of v5.17 adds
+ * the framebuffer's offsets, map[] stays).  5.10 has none: the update maps
+ * the shmem BO itself with drm_gem_shmem_vmap(), which v5.11 changed to
+ * fill a struct dma_buf_map - so prukit's display drivers build for v5.10
+ * and for v5.12 on, not for v5.11.  Either way the address is the BO's
+ * start; the driver adds fb->offsets[].
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 12, 0)
+#include <drm/drm_gem_atomic_helper.h>
+#define PRUKIT_DRM_SHADOW_PLANE_FUNCS	DRM_GEM_SIMPLE_DISPLAY_PIPE_SHADOW_PLANE_FUNCS
+static inline void *prukit_drm_fb_vmap(struct drm_plane_state *state)
+{
+	return to_drm_shadow_plane_state(state)->map[0].vaddr;
+}
+
+static inline void prukit_drm_fb_vunmap(struct drm_plane_state *state, void *vaddr)
+{
+}
+#elif LINUX_VERSION_CODE < KERNEL_VERSION(5, 11, 0)
+#include <drm/drm_gem_shmem_helper.h>
+#define PRUKIT_DRM_SHADOW_PLANE_FUNCS \
+	.prepare_fb = drm_gem_fb_simple_display_pipe_prepare_fb
+static inline void *prukit_drm_fb_vmap(struct drm_plane_state *state)
+{
+	return drm_gem_shmem_vmap(state->fb->obj[0]);
+}
+
+static inline void prukit_drm_fb_vunmap(struct drm_plane_state *state, void *vaddr)
+{
+	drm_gem_shmem_vunmap(state->fb->obj[0], vaddr);
+}
+#else
+#error "prukit's DRM drivers build for v5.10 and v5.12 or later"
+#endif
+
+/*
+ * fbdev emulation (/dev/fbN) drawn into a shadow buffer and copied to the
+ * plane's framebuffer on damage: drm_fbdev_generic_setup() in
+ * <drm/drm_fb_helper.h>, in <drm/drm_fbdev_generic.h> from v6.2 ("drm/
+ * fb-helper: Move generic fbdev emulation into separate source file"),
+ * renamed drm_fbdev_ttm_setup() in v6.11 ("drm/fbdev-generic: Convert to
+ * fbdev-ttm"; its code stays generic, in drm_ttm_helper.ko).  v6.11's
+ * drm_fbdev_shmem_setup() maps the GEM object's shmem pages to fbdev
+ * clients with deferred I/O instead; that sets page->mapping of shmem pages
+ * (fb_defio.c) and, once a client has written through an mmap of
+ * /dev/fbN, freeing the object at unbind loops for ever in
+ * shmem_undo_range() (seen on 6.12 in 84-hub75): fbdev-shmem only where
+ * the kernel lacks drm_ttm_helper.  v6.13's drm_client_setup() would need
+ * .fbdev_probe in the driver.
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 11, 0) && IS_ENABLED(CONFIG_DRM_TTM_HELPER)
+#include <drm/drm_fbdev_ttm.h>
+#define prukit_drm_fbdev_setup(drm)	drm_fbdev_ttm_setup(drm, 32)
+#elif LINUX_VERSION_CODE >= KERNEL_VERSION(6, 11, 0)
+#include <drm/drm_fbdev_shmem.h>
+#define prukit_drm_fbdev_setup(drm)	drm_fbdev_shmem_setup(drm, 32)
+#elif LINUX_VERSION_CODE >= KERNEL_VERSION(6, 2, 0)
+#include <drm/drm_fbdev_generic.h>
+#define prukit_drm_fbdev_setup(drm)	drm_fbdev_generic_setup(drm, 32)
+#else
+#include <drm/drm_fb_helper.h>
+#define prukit_drm_fbdev_setup(drm)	drm_fbdev_generic_setup(drm, 32)
+#endif
+#endif /* PRUKIT_COMPAT_DRM */
+
 #endif /* PRUKIT_COMPAT_H */

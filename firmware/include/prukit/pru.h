@@ -17,6 +17,10 @@
 
 #include <stdint.h>
 
+#ifndef ARRAY_SIZE
+#define ARRAY_SIZE(a)		(sizeof(a) / sizeof((a)[0]))
+#endif
+
 /* Bits of R31 when read */
 #define PRU_R31_GPI_MASK	0x3fffffffu	/* direct inputs (pins 0..29) */
 #define PRU_R31_HOST0		(1u << 30)	/* INTC host interrupt 0 pending */

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * hub75_conv.c - framebuffer pixels to the hub75 firmware's blocks.
+ *
+ * A frame buffer (hub75_proto.h) is @planes * @rows blocks in the order
+ * they are shown: block k * rows + r holds address row r of plane
+ * order[k].  Entry x of a block is what the data lines carry at the row's
+ * x-th clock: R1 G1 B1 from display row r (the top half), R2 G2 B2 from row
+ * r + rows (the bottom half), each line's bit of the pixel's level in that
+ * plane.  The x-th pixel clocked ends up in column x of the chain.
+ *
+ * Compiled unchanged in the kernel and on the host (hub75_conv.h).
+ */
+#include <linux/types.h>
+
+#include "hub75_conv.h"
+
+/*
+ * The plane order: the longest plane, the shortest, the second longest,
+ * the second shortest ...  Each row's lit time is then spread over the
+ * refresh instead of coming in one piece (Documentation/hub75.rst).
+ */
+void hub75_layout_order(struct hub75_layout *l)
+{
+	unsigned int k, lo = 0, hi = l->planes;
+
+	for (k = 0; k < l->planes; k++)
+		l->order[k] = k % 2 ? lo++ : --hi;
+	for (k = 0; k < l->planes; k++)
+		l->block_of_plane[l->order[k]] = k;
+}
+
+/* round(num / den), halves up, without a 64-bit division (32-bit ARM) */
+static u32 hub75_round_div(u64 num, u64 den, u32 max)
+{
+	u32 lo = 0, hi = max;
+
+	/* the largest level L with (2L - 1) * den <= 2 * num */
+	while (lo < hi) {
+		u32 mid = (lo + hi + 1) / 2;
+
+		if ((2 * (u64)mid - 1) * den <= 2 * num)
+			lo = mid;
+		else
+			hi = mid - 1;
+	}
+	return lo;
+}
+
+/*
+ * The level of each 8-bit value v, M = 2^planes - 1:
+ *  linear: round(v * M / 255);
+ *  cie1931: round(Y * M), Y the CIE 1931 luminance of lightness
+ *	L* = 100 * v / 255: L* / 903.3 up to L* = 8, ((L* + 16) / 116)^3
+ *	above, computed exactly in integers:
+ *	v <= 20: Y = 1000 v / (255 * 9033),
+ *	v > 20:  Y = (100 v + 4080)^3 / 29580^3.
+ */
+void hub75_layout_lut(struct hub75_layout *l, enum hub75_correction corr)
+{
+	u32 max = (1u << l->planes) - 1;
+	unsigned int v;
+
+	for (v = 0; v < 256; v++) {
+		u64 t = 100 * v + 4080;
+
+		if (corr == HUB75_LINEAR)
+			l->lut[v] = hub75_round_div((u64)v * max, 255, max);
+		else if (v <= 20)
+			l->lut[v] = hub75_round_div((u64)v * 1000 * max, 255 * 9033, max);
+		else
+			l->lut[v] = hub75_round_div(t * t * t * max, 29580ull * 29580 * 29580, max);
+	}
+}
+
+size_t hub75_buffer_size(const struct hub75_layout *l)
+{
+	return (size_t)l->planes * l->rows * l->row_bytes;
+}
+
+/* The six levels of clock x of address row r */
+static void hub75_levels(const struct hub75_layout *l, const u8 *src, unsigned int pitch,
+			 enum hub75_format format, unsigned int x, unsigned int r,
+			 unsigned int *lv)
+{
+	unsigned int half, c;
+
+	for (half = 0; half < 2; half++) {
+		const u8 *line = src + (size_t)(r + half * l->rows) * pitch;
+		unsigned int rgb[3];
+
+		if (format == HUB75_RGB565) {
+			u16 p = line[2 * x] | line[2 * x + 1] << 8;
+			unsigned int r5 = p >> 11, g6 = (p >> 5) & 0x3f, b5 = p & 0x1f;
+
+			rgb[0] = r5 << 3 | r5 >> 2;
+			rgb[1] = g6 << 2 | g6 >> 4;
+			rgb[2] = b5 << 3 | b5 >> 2;
+		} else {
+			/* little endian 0xXXRRGGBB: bytes B, G, R, X */
+			rgb[0] = line[4 * x + 2];
+			rgb[1] = line[4 * x + 1];
+			rgb[2] = line[4 * x];
+		}
+		for (c = 0; c < 3; c++)
+			lv[half * 3 + c] = l->lut[rgb[c]];
+	}
+}
+
+/**
+ * hub75_convert() - write the blocks of a rectangle of the display
+ * @l: the layout
+ * @buf: the frame buffer, hub75_buffer_size() bytes
+ * @src: the source image, the whole display: @l->width x @l->height
+ * @pitch: bytes per line of @src
+ * @format: pixel format of @src
+ * @rect: the pixels that changed (clipped to the display)
+ *
+ * Each changed pixel shares its blocks' entries with the pixel @rows lines
+ * above or below: both are read from @src, so @src must hold the whole
+ * current image, not only @rect.
+ */
+void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
+		   unsigned int pitch, enum hub75_format format,
+		   const struct hub75_rect *rect)
+{
+	unsigned int x1 = rect->x1, x2 = rect->x2 < l->width ? rect->x2 : l->width;
+	unsigned int y2 = rect->y2 < l->height ? rect->y2 : l->height;
+	bool touched[HUB75_MAX_ROWS] = { };
+	unsigned int y, r, x, p, c;
+
+	for (y = rect->y1; y < y2; y++)
+		touched[y % l->rows] = true;
+	for (r = 0; r < l->rows; r++) {
+		if (!touched[r])
+			continue;
+		for (x = x1; x < x2; x++) {
+			unsigned int lv[HUB75_LINES];
+
+			hub75_levels(l, src, pitch, format, x, r, lv);
+			for (p = 0; p < l->planes; p++) {
+				size_t off = ((size_t)l->block_of_plane[p] * l->rows + r) *
+					     l->row_bytes + (size_t)x * l->entry_bytes;
+				unsigned int e = 0;
+
+				for (c = 0; c < HUB75_LINES; c++)
+					e |= ((lv[c] >> p) & 1) << l->line_bit[c];
+				buf[off] = e;
+				if (l->entry_bytes == 2)
+					buf[off + 1] = e >> 8;
+			}
+		}
+	}
+}

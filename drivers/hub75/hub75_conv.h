@@ -1,0 +1,77 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * hub75_conv.h - turning a framebuffer into the blocks the hub75 firmware
+ * clocks out (hub75_proto.h).
+ *
+ * hub75_conv.c is compiled unchanged in the kernel module and in host
+ * programs (drivers/hub75/tests/conv: its unit test and its benchmark),
+ * which put drivers/ws281x/tests/include first on the include path: its
+ * <linux/types.h> gives them the kernel's names for the types used here.
+ */
+#ifndef _HUB75_CONV_H
+#define _HUB75_CONV_H
+
+#include <linux/types.h>
+
+#include "hub75_proto.h"
+
+/* Source pixel formats (the DRM formats of the same names) */
+enum hub75_format {
+	HUB75_XRGB8888,
+	HUB75_RGB565,
+};
+
+/* The six data lines, in the order of the binding's pin lists */
+enum hub75_line {
+	HUB75_R1, HUB75_G1, HUB75_B1, HUB75_R2, HUB75_G2, HUB75_B2,
+	HUB75_LINES
+};
+
+/* Brightness correction of each 8-bit component */
+enum hub75_correction {
+	HUB75_CIE1931,
+	HUB75_LINEAR,
+};
+
+/**
+ * struct hub75_layout - where each pixel's bits go in a frame buffer
+ * @width: pixels in a row of the display (clocks per row), the chain's
+ * @height: rows of the display, 2 * @rows
+ * @rows: address rows (the panel's scan)
+ * @planes: bit planes, 1..HUB75_MAX_PLANES
+ * @entry_bytes: bytes per clock in a block: 1 (HUB75_DATA_R30) or 2
+ * @row_bytes: bytes of a block: @width * @entry_bytes rounded up to
+ *	HUB75_CHUNK_BYTES (the driver refuses geometries that need rounding)
+ * @order: the planes in the order they are shown (@order[0] first)
+ * @line_bit: bit of each data line in a block's entry
+ * @lut: level (0 .. 2^@planes - 1) of each 8-bit component value
+ * @block_of_plane: position of each plane in @order
+ */
+struct hub75_layout {
+	unsigned int width;
+	unsigned int height;
+	unsigned int rows;
+	unsigned int planes;
+	unsigned int entry_bytes;
+	unsigned int row_bytes;
+	u8 order[HUB75_MAX_PLANES];
+	u8 line_bit[HUB75_LINES];
+	u16 lut[256];
+	u8 block_of_plane[HUB75_MAX_PLANES];
+};
+
+/**
+ * struct hub75_rect - pixels [x1, x2) x [y1, y2) of the display
+ */
+struct hub75_rect {
+	unsigned int x1, y1, x2, y2;
+};
+
+void hub75_layout_order(struct hub75_layout *l);
+void hub75_layout_lut(struct hub75_layout *l, enum hub75_correction corr);
+size_t hub75_buffer_size(const struct hub75_layout *l);
+void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
+		   unsigned int pitch, enum hub75_format format,
+		   const struct hub75_rect *rect);
+
+#endif /* _HUB75_CONV_H */

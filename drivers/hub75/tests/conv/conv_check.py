@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-only
+"""hub75_conv.c (built for the host as conv_test) against hub75_model.py,
+the documented arithmetic written again: every level of every depth and
+correction, and frame buffers of several layouts, pixel formats and
+partial updates, byte for byte.
+
+    conv_check.py CONV_TEST WORKDIR"""
+import os
+import random
+import struct
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import hub75_model  # noqa: E402
+
+FAILS = []
+
+
+def check(name, cond, detail=""):
+    print("%s: %s%s" % ("PASS" if cond else "FAIL", name, (" (%s)" % detail) if detail else ""))
+    if not cond:
+        FAILS.append(name)
+
+
+def image(width, height, fmt, seed):
+    rnd = random.Random(seed)
+    if fmt == "rgb565":
+        return b"".join(struct.pack("<H", rnd.getrandbits(16)) for _ in range(width * height))
+    return b"".join(struct.pack("<I", rnd.getrandbits(32)) for _ in range(width * height))
+
+
+def main(conv, work):
+    for corr in ("cie1931", "linear"):
+        bad = []
+        for planes in range(1, 12):
+            out = subprocess.run([conv, "lut", str(planes), corr], capture_output=True,
+                                 text=True).stdout.split()
+            want = [hub75_model.level(v, planes, corr) for v in range(256)]
+            if [int(x) for x in out] != want:  # a crash prints nothing: differs
+                bad.append(planes)
+        check("levels of all 256 values, 1..11 planes, %s" % corr, not bad, "planes %s" % bad)
+    layouts = [
+        ("64x32 R30 8 planes cie1931 xrgb8888", 64, 32, 16, 8, "cie1931", 1, [0, 1, 2, 3, 4, 5],
+         "xrgb8888"),
+        ("64x32 GPIO (PocketScroller) 8 planes rgb565", 64, 32, 16, 8, "cie1931", 2,
+         [2, 10, 7, 8, 9, 0], "rgb565"),
+        ("128x32 chain R30 6 planes linear", 128, 32, 16, 6, "linear", 1, [5, 4, 3, 2, 1, 0],
+         "xrgb8888"),
+        ("32x16 1/8 R30 11 planes", 32, 16, 8, 11, "cie1931", 1, [0, 1, 2, 3, 4, 5], "xrgb8888"),
+        ("64x64 1/32 GPIO 4 planes linear", 64, 64, 32, 4, "linear", 2, [15, 14, 13, 0, 1, 2],
+         "rgb565"),
+    ]
+    for n, (name, w, h, rows, planes, corr, eb, bits, fmt) in enumerate(layouts):
+        a = image(w, h, fmt, n)
+        pa = os.path.join(work, "a.raw")
+        with open(pa, "wb") as f:
+            f.write(a)
+        args = [conv, "frame", str(planes), corr, str(w), str(h), str(rows), str(eb)] + \
+            [str(b) for b in bits] + [fmt, pa]
+        got = subprocess.run(args, capture_output=True).stdout
+        want = hub75_model.frame_buffer(bits, eb, hub75_model.expected(a, fmt.upper(), w, h, planes, corr), rows, planes)
+        check("frame buffer: %s" % name, got == want, "%d/%d bytes" % (len(got), len(want)))
+        # a rectangle changes, only it is converted again
+        bpp = 2 if fmt == "rgb565" else 4
+        b = bytearray(a)
+        x1, y1, x2, y2 = w // 5, h // 7, w - w // 3, h - 3
+        new = image(w, h, fmt, 100 + n)
+        for y in range(y1, y2):
+            b[(y * w + x1) * bpp:(y * w + x2) * bpp] = new[(y * w + x1) * bpp:(y * w + x2) * bpp]
+        pb = os.path.join(work, "b.raw")
+        with open(pb, "wb") as f:
+            f.write(b)
+        got = subprocess.run(args + [str(x1), str(y1), str(x2), str(y2), pb],
+                             capture_output=True).stdout
+        want = hub75_model.frame_buffer(bits, eb, hub75_model.expected(bytes(b), fmt.upper(), w, h,
+                                                                       planes, corr), rows, planes)
+        check("frame buffer: %s, then rectangle (%d,%d)-(%d,%d) changed" % (name, x1, y1, x2, y2),
+              got == want)
+    return 1 if FAILS else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2]))

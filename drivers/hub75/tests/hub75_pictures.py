@@ -1,0 +1,81 @@
+# SPDX-License-Identifier: GPL-2.0-only
+"""Host side of the hub75 VM test and of make demo's matrix: one picture
+the guest recorded (hub75_vm.Recorder: NAME.trace and its entry in
+hub75.json) decoded by tools/hub75-decode.py, a model of the panel that
+knows nothing of the firmware, and compared exactly with what the driver
+should show (hub75_model.py)."""
+import importlib.util
+import os
+
+from hub75_model import expected, plane_order
+
+TOP = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../.."))
+spec = importlib.util.spec_from_file_location("hub75_decode", TOP + "/tools/hub75-decode.py")
+hd = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(hd)
+
+
+def decoder(art, m):
+    _, dropped, events = hd.read_trace(os.path.join(art, m["name"] + ".trace"))
+    pinmap = dict(hd.MAPS[m["map"]])
+    if m["scan"] < 32:
+        pinmap.pop("e", None)
+    return dropped, hd.Decoder(events, pinmap, m["width"], m["height"], m["scan"],
+                               initial={"oe": 1})
+
+
+def check_picture(art, m, check):
+    """Decode picture M (an entry of hub75.json) from ART/M["name"].trace
+    and check it with CHECK(name, condition, detail); the decoded levels of
+    its first whole refresh, or None."""
+    name = m["name"]
+    dropped, dec = decoder(art, m)
+    check("%s: the trace is whole (no records dropped)" % name, not dropped, dropped)
+    pulses = dec.oe_pulses()
+    if m["image"] is None:
+        check("%s: no row lit at brightness 0" % name,
+              not pulses and dec.integrate()["lit_cycles"] == 0, "%d pulses" % len(pulses))
+        return None
+    rows, planes, lsb = m["scan"], m["planes"], m["lsb"]
+    order = plane_order(planes)
+    n = rows * planes
+    first = [i for i, (s, e, a) in enumerate(pulses)
+             if a == 0 and e is not None and e - s == lsb << order[0]]
+    if not check("%s: a whole refresh in the trace" % name,
+                 first and first[0] + n < len(pulses),
+                 "%d pulses, refresh starts at %s" % (len(pulses), first[:3])):
+        return None
+    i = first[0]
+    ref = pulses[i:i + n]
+    t0, t1 = ref[0][0], pulses[i + n][0]
+    want_t = [lsb << order[k // rows] for k in range(n)]
+    got_t = [e - s for s, e, a in ref]
+    check("%s: each row lit exactly lsb << plane cycles (lsb %d), planes in the driver's order"
+          % (name, lsb), got_t == want_t,
+          "first difference at pulse %s" % next((k for k in range(n) if got_t[k] != want_t[k]), None))
+    check("%s: rows 0..%d in each plane" % (name, rows - 1),
+          [a for s, e, a in ref] == list(range(rows)) * planes)
+    res = dec.integrate(t0, t1)
+    faults = {k: res[k] for k in ("setup_violations", "clk_while_lat", "ghosting",
+                                  "clk_while_lit", "oe_coincident", "bad_address")}
+    check("%s: no data, latch or address change while lit, no data change on a clock edge"
+          % name, not any(faults.values()), faults)
+    check("%s: the refresh in the trace is refresh_cycles long (%d cycles, %.0f Hz)"
+          % (name, t1 - t0, 200e6 / (t1 - t0)), t1 - t0 == m["refresh"],
+          "trace %d, driver %d" % (t1 - t0, m["refresh"]))
+    clk = dec.clock_stats(t0, t1)
+    want_clk = 16 if m["map"] == "pocketscroller" else 10
+    check("%s: pixel clock %.1f MHz" % (name, 200 / want_clk), clk["min_period"] == want_clk,
+          clk["min_period"])
+    levels, dev = hd.to_levels(res["on"], lsb)
+    with open(os.path.join(art, m["image"]), "rb") as f:
+        data = f.read()
+    want = expected(data, m["format"], m["width"], m["height"], planes, m["correction"])
+    bad = [(x, y) for y in range(m["height"]) for x in range(m["width"])
+           if tuple(levels[y][x]) != want[y][x]]
+    check("%s: every pixel shows the picture's levels exactly (%dx%d, %d planes, %s)"
+          % (name, m["width"], m["height"], planes, m["correction"]), not bad and dev == 0,
+          "%d pixels differ, first %s: got %s, want %s" % (
+              len(bad), bad[:1], bad and levels[bad[0][1]][bad[0][0]],
+              bad and want[bad[0][1]][bad[0][0]]) if bad else "deviation %s" % dev)
+    return levels

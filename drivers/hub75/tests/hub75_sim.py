@@ -1,0 +1,247 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-only
+"""The hub75 firmware in the prusim host tool, without a driver.
+
+Each case writes a control block and two frame buffers (hub75_proto.h's
+layout, built here from an image of levels), runs the firmware for a bit
+more than two refreshes, and decodes the pins with tools/hub75-decode.py,
+which models the panel (shift registers, latch, rows lit while OE is low)
+and knows nothing of the firmware.  The second refresh must show every
+pixel's levels exactly, each plane lit exactly lsb << plane cycles per
+row, no data, latch or address change while a row is lit, no data change
+on a clock edge; the refresh length in the trace must be the one the
+firmware reports (@refresh_cycles).  Also: the buffer @show names is the
+one shown, and START refuses bad parameters.
+
+    hub75_sim.py PRUSIM FWDIR WORKDIR [--bench]
+
+--bench prints the figures of make bench (pixel clock, refresh rates) as
+"bench:" lines.  Prints PASS:/FAIL: lines; exits 1 on any failure.
+"""
+import importlib.util
+import os
+import struct
+import subprocess
+import sys
+
+TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "../../.."))
+spec = importlib.util.spec_from_file_location("hub75_decode", TOP + "/tools/hub75-decode.py")
+hd = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(hd)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hub75_model  # noqa: E402
+from hub75_model import plane_order  # noqa: E402
+
+MAGIC = 0x35374248
+VERSION = 1
+CTRL_SIZE = 240
+START, STOP = 1, 2
+DDR = 0x80000000
+GPIO1 = 0x4804c000
+FAILS = []
+
+
+def check(name, cond, detail=""):
+    print("%s: %s%s" % ("PASS" if cond else "FAIL", name, (" (%s)" % detail) if detail else ""))
+    if not cond:
+        FAILS.append(name)
+    return cond
+
+
+# The two pin maps of the shipped overlays (the decoder has its own copies)
+BONE = dict(core=1, mode=0, data=[0, 1, 2, 3, 4, 5], clk=6, lat=7, oe=8, addr=[9, 10, 11, 12, 13])
+POCKET = dict(core=0, mode=1, data=[20, 28, 25, 26, 27, 18], clk=1, lat=0, oe=7, addr=[2, 3, 4, 5])
+
+
+def image(width, height, planes, seed):
+    """Levels (r, g, b) per pixel: gradients and a checker, all levels used."""
+    m = (1 << planes) - 1
+    img = []
+    for y in range(height):
+        row = []
+        for x in range(width):
+            r = (x * 7 + y * 3 + seed) % (m + 1)
+            g = (x * y + seed * 5) % (m + 1)
+            b = m if (x // 4 + y // 4 + seed) % 2 else (x + 2 * y) % (m + 1)
+            row.append((r, g, b))
+        img.append(row)
+    return img
+
+
+def frame_buffer(pm, img, rows, planes):
+    shift = min(pm["data"]) if pm["mode"] else 0
+    return hub75_model.frame_buffer([b - shift for b in pm["data"]], 2 if pm["mode"] else 1,
+                                    img, rows, planes)
+
+
+def ctrl(pm, rows, planes, row_bytes, oe, show, clk_delay, bufs, addr_lines):
+    addr = pm["addr"][:addr_lines]
+    row_addr = [sum(1 << addr[i] for i in range(addr_lines) if r >> i & 1) for r in range(32)]
+    gpio_mask = sum(1 << b for b in pm["data"]) if pm["mode"] else 0
+    hdr = struct.pack("<IHHII", MAGIC, VERSION, CTRL_SIZE, START | 1 << 16, 0)
+    body = struct.pack("<2I3IHH8B", bufs[0], bufs[1], GPIO1 if pm["mode"] else 0, gpio_mask,
+                       sum(1 << a for a in addr), row_bytes, rows, pm["mode"], planes, pm["clk"],
+                       pm["lat"], pm["oe"], min(pm["data"]) if pm["mode"] else 0, clk_delay, 0)
+    oe = list(oe) + [0] * (12 - len(oe))
+    return hdr + body + struct.pack("<32I", *row_addr) + struct.pack("<12I", *oe) + \
+        struct.pack("<4I", show, 0, 0, 0)
+
+
+def run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay=3, show=0,
+        refreshes=2.3, cycles=None, raw_ctrl=None):
+    """Run the firmware; return (ctrl fields, decoder, images) or None."""
+    rows = scan
+    bpe = 2 if pm["mode"] else 1
+    row_bytes = width * bpe
+    imgs = [image(width, height, planes, 1), image(width, height, planes, 2)]
+    fbs = [frame_buffer(pm, imgs[i], rows, planes) for i in range(2)]
+    size = len(fbs[0])
+    order = plane_order(planes)
+    oe = [lsb << p for p in order]
+    if cycles is None:
+        pix = 16 if pm["mode"] else 4 + 2 * clk_delay
+        est = rows * (planes * (row_bytes // 32 * 53 + width * pix + 40) + sum(oe))
+        cycles = int(est * refreshes) + 2000
+    blob = raw_ctrl or ctrl(pm, rows, planes, row_bytes, oe, show, clk_delay,
+                            [DDR, DDR + size], scan.bit_length() - 1)
+    core = "pru%d" % pm["core"]
+    with open(work + "/ctrl.bin", "wb") as f:
+        f.write(blob)
+    with open(work + "/ddr.bin", "wb") as f:
+        f.write(fbs[0] + fbs[1])
+    cmd = [prusim, "--" + core, "%s/hub75-%s.elf" % (fw, core), "--ddr", "0x%x" % max(2 * size, 0x10000),
+           "--load", "%s:0x8:%s/ctrl.bin" % (core, work), "--load", "0x%x:%s/ddr.bin" % (DDR, work),
+           "--max-cycles", str(cycles), "--dump", "%s:0x8:%d:%s/out.bin" % (core, CTRL_SIZE, work),
+           "--trace-out", work + "/trace.bin"]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode:
+        print(r.stderr)
+        return None
+    with open(work + "/out.bin", "rb") as f:
+        out = f.read()
+    status, = struct.unpack_from("<I", out, 12)
+    show_, shown, nref, rcyc = struct.unpack_from("<4I", out, 224)
+    _, _, events = hd.read_trace(work + "/trace.bin")
+    pins = {"pocketscroller": hd.MAPS["pocketscroller"], "bone-r30": hd.MAPS["bone-r30"]}
+    pinmap = dict(pins["pocketscroller" if pm is POCKET else "bone-r30"])
+    if scan < 32:
+        pinmap.pop("e", None)
+    dec = hd.Decoder(events, pinmap, width, height, scan, initial={})
+    return dict(status=status, shown=shown, refreshes=nref, refresh_cycles=rcyc), dec, imgs, oe
+
+
+def decode_refresh(dec, rows, planes, k):
+    """Pulses and integration of refresh k (from 0)."""
+    # OE is low (0) from the core's start to the first refresh's: not a row lit
+    first = min(dec.latches() or [0])
+    pulses = [p for p in dec.oe_pulses() if p[0] > first]
+    n = rows * planes
+    if len(pulses) < (k + 1) * n + 1:
+        return None
+    t0, t1 = pulses[k * n][0], pulses[(k + 1) * n][0]
+    return t0, t1, pulses[k * n:(k + 1) * n], dec.integrate(t0, t1)
+
+
+def case(prusim, fw, work, name, pm, width, height, scan, planes, lsb, clk_delay=3, show=0):
+    res = run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay, show)
+    if not check("%s: prusim ran" % name, res is not None):
+        return None
+    c, dec, imgs, oe = res
+    check("%s: START answered OK" % name, c["status"] == (1 << 16 | 0x8000), "0x%x" % c["status"])
+    check("%s: buffer %d shown" % (name, show), c["shown"] == show, str(c["shown"]))
+    got = decode_refresh(dec, scan, planes, 1)
+    if not check("%s: two refreshes in the trace" % name, got is not None,
+                 "%d pulses" % len(dec.oe_pulses())):
+        return None
+    t0, t1, pulses, integ = got
+    levels, dev = hd.to_levels(integ["on"], lsb)
+    want = imgs[show]
+    bad = [(x, y) for y in range(height) for x in range(width)
+           if tuple(levels[y][x]) != tuple(want[y][x])]
+    check("%s: every pixel's levels exact" % name, not bad and dev == 0,
+          "%d pixels differ, first %s: got %s want %s; deviation %s" % (
+              len(bad), bad[:1], bad and levels[bad[0][1]][bad[0][0]],
+              bad and want[bad[0][1]][bad[0][0]], dev) if bad or dev else "%d pixels" % (width * height))
+    hist = {}
+    for s, e, a in pulses:
+        hist[e - s] = hist.get(e - s, 0) + 1
+    check("%s: each plane lit exactly lsb << plane cycles, per row" % name,
+          hist == {t: scan for t in oe}, str(sorted(hist.items())))
+    rows_seen = [a for s, e, a in pulses[:scan]]
+    check("%s: rows in address order per plane" % name, rows_seen == list(range(scan)), str(rows_seen))
+    faults = {k: integ[k] for k in ("setup_violations", "clk_while_lat", "ghosting", "clk_while_lit",
+                                    "oe_coincident", "bad_address")}
+    check("%s: no change while lit, no data change on a clock edge" % name,
+          not any(faults.values()), str(faults))
+    check("%s: refresh length in the trace = @refresh_cycles" % name,
+          c["refreshes"] >= 2 and t1 - t0 == c["refresh_cycles"],
+          "trace %d, firmware %d, %d refreshes" % (t1 - t0, c["refresh_cycles"], c["refreshes"]))
+    clk = dec.clock_stats(t0, t1)
+    return dict(refresh=t1 - t0, clk=clk, lit=sum(e - s for s, e, a in pulses), lsb=lsb)
+
+
+def bad_start(prusim, fw, work):
+    pm = BONE
+    good = dict(rows=16, planes=8, row_bytes=64, oe=[26] * 8, show=0, clk_delay=3,
+                bufs=[DDR, DDR + 8192], addr_lines=4)
+    for what, change in (("row bytes not a multiple of 32", dict(row_bytes=40)),
+                         ("12 planes", dict(planes=12)),
+                         ("clock delay 0", dict(clk_delay=0))):
+        args = dict(good, **change)
+        blob = ctrl(pm, **args)
+        res = run(prusim, fw, work, pm, 64, 32, 16, 8, 26, cycles=20000, raw_ctrl=blob)
+        check("START refuses %s" % what, res is not None and res[0]["status"] == (1 << 16 | 0x8000 | 1),
+              res and "0x%x" % res[0]["status"])
+    # clock above bit 7 with data on R30
+    bone = dict(BONE, clk=9, addr=[10, 11, 12, 13, 14])
+    blob = ctrl(bone, **good)
+    res = run(prusim, fw, work, bone, 64, 32, 16, 8, 26, cycles=20000, raw_ctrl=blob)
+    check("START refuses an R30 clock above bit 7", res is not None and res[0]["status"] == (1 << 16 | 0x8000 | 1),
+          res and "0x%x" % res[0]["status"])
+
+
+def main():
+    prusim, fw, work = sys.argv[1:4]
+    bench = "--bench" in sys.argv
+    os.makedirs(work, exist_ok=True)
+    r = {}
+    r["bone"] = case(prusim, fw, work, "bone-r30 64x32 8 planes", BONE, 64, 32, 16, 8, 26)
+    r["bone-b1"] = case(prusim, fw, work, "bone-r30 64x32, buffer 1", BONE, 64, 32, 16, 8, 26, show=1)
+    r["chain"] = case(prusim, fw, work, "bone-r30 chain of 2 (128x32)", BONE, 128, 32, 16, 8, 26)
+    r["64x64"] = case(prusim, fw, work, "bone-r30 64x64 1/32 scan (E line), 6 planes", BONE, 64, 64, 32, 6, 26)
+    r["32x16"] = case(prusim, fw, work, "bone-r30 32x16 1/8 scan, 25 MHz, lsb 13", BONE, 32, 16, 8, 8, 13,
+                      clk_delay=2)
+    r["pocket"] = case(prusim, fw, work, "pocketscroller 64x32 8 planes", POCKET, 64, 32, 16, 8, 26)
+    r["pocket-dim"] = case(prusim, fw, work, "pocketscroller 64x32, lsb 3 (dim)", POCKET, 64, 32, 16, 8, 3)
+    bad_start(prusim, fw, work)
+    for k in ("bone", "pocket"):
+        if r[k]:
+            clk = r[k]["clk"]
+            check("%s: pixel clock within a row" % k,
+                  clk["min_period"] == (10 if k == "bone" else 16), str(clk["min_period"]))
+    if bench:
+        # the issue's yardstick: eight chained 64x32 panels at 8 bit planes
+        r["chain8"] = case(prusim, fw, work, "bone-r30 chain of 8 (512x32)", BONE, 512, 32, 16, 8,
+                           26)
+        what = {"bone": "all-R30 map, one 64x32 panel, 8 planes",
+                "chain": "all-R30 map, 2 chained 64x32 panels, 8 planes",
+                "chain8": "all-R30 map, 8 chained 64x32 panels (512x32), 8 planes",
+                "64x64": "all-R30 map, 64x64 1/32 scan, 6 planes",
+                "32x16": "all-R30 map, 32x16 1/8 scan, 8 planes, 25 MHz clock",
+                "pocket": "PocketScroller map (data on GPIO bank 1), 64x32, 8 planes"}
+        for k, v in r.items():
+            if v and k in what:
+                c = v["clk"]
+                print("BENCH: hub75 %s: refresh %d PRU cycles = %.1f Hz; pixel clock %.2f MHz "
+                      "(%d cycles a pixel); rows lit %.1f %% of the time (LSB %d ns; exact, "
+                      "prusim)" % (what[k], v["refresh"], 200e6 / v["refresh"],
+                                   c["inst_hz"] / 1e6, c["min_period"],
+                                   100.0 * v["lit"] / v["refresh"], 5 * v["lsb"]))
+    if FAILS:
+        print("%d failed" % len(FAILS))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
