@@ -18,6 +18,11 @@
 #     trigger position error (exact, prusim), and the largest one-shot
 #     100 Msps capture with zero loss in the VM
 #     (drivers/beaglelogic/tests/bench.sh)
+#   - hub75: the refresh of the real firmware in prusim (PRU cycles and Hz,
+#     pixel clock; one, two and eight chained 64x32 panels on the all-R30
+#     map, one on the PocketScroller's) and the ARM's instructions per pixel
+#     to turn a damaged frame into bit planes (callgrind, host build of
+#     drivers/hub75/hub75_conv.c; drivers/hub75/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 set -euo pipefail
@@ -36,6 +41,10 @@ grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
 	{ grep -E '^(FAIL|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log" || true
 	  die "drivers/beaglelogic/tests/bench.sh failed; see out/beaglelogic-bench.log"; }
 grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
+"$PRUKIT_TOP/drivers/hub75/tests/bench.sh" >"$PRUKIT_TOP/out/hub75-bench.log" 2>&1 ||
+	{ grep -E '^FAIL:' "$PRUKIT_TOP/out/hub75-bench.log" || true
+	  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
+grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
 out=$PRUKIT_TOP/out/bench
 "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out" 2>&1 |
 	grep -E '^(BENCH|INFO):' || true
