@@ -15,7 +15,12 @@
 #  - prukit's beaglelogic driver (tests/vm/demo/logic): sigrok-cli -d
 #    beaglelogic captures a UART line and an SPI bus into a session
 #    (logic.sr, for PulseView), which sigrok's uart and spi decoders
-#    decode and tools/logic-show.py draws (logic-uart.png, logic-spi.png).
+#    decode and tools/logic-show.py draws (logic-uart.png, logic-spi.png);
+#  - prukit's hub75 driver (tests/vm/demo/matrix): a picture and scrolling
+#    text written with cat to /dev/fbN of a 64x32 HUB75 panel, decoded from
+#    the pins by tools/hub75-decode.py and drawn as the panel would look
+#    (drivers/hub75/tests/hub75_demo.py: matrix-picture.png,
+#    matrix-scroll.gif, matrix-scroll.png).
 #
 # What the simulated pins did is decoded by sigrok's rgb_led_ws281x decoder
 # (GRB strings; the others by tools/ws281x-show.py's own decoder, which must
@@ -31,8 +36,13 @@ rm -rf "$out"
 mkdir -p "$out"
 
 make -s -C "$PRUKIT_TOP" firmware tools >/dev/null
+# the guest's parts, and the frames its matrix part draws
+in=$(mktemp -d)
+trap 'rm -rf "$in"' EXIT
+cp -r "$PRUKIT_TOP/tests/vm/demo/." "$in/"
+/usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" frames "$in/matrix-frames"
 msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, PRUs simulated by pru_sim)"
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/demo/all" "$PRUKIT_TOP/tests/vm/demo" "$out"
+"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/all" "$in" "$out"
 
 "$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/trace.bin" --events "$out/neopixel.events" \
 	--vcd "$out/neopixel.vcd"
@@ -115,11 +125,21 @@ PY
 /usr/bin/python3 "$PRUKIT_TOP/tools/logic-show.py" "$out/logic.sr" "${chans[@]}" "${spi[@]}" \
 	--from "$spi_at" --samples "$spi_n" --png "$out/logic-spi.png" >/dev/null
 
+# prukit's hub75 driver: the pins of every frame the guest drew
+echo
+echo "prukit's hub75 driver: a 64x32 HUB75 panel on PRU1's R30 (PRUKIT-HUB75-00A0), a picture"
+echo "and scrolling text written with cat to /dev/fbN; what the panel shows, decoded from the"
+echo "pins by tools/hub75-decode.py (8 bit planes, CIE 1931 levels; every pixel must be exact):"
+mkdir -p "$out/matrix"
+mv "$out"/hub75.json "$out"/picture.* "$out"/scroll-* "$out/matrix/"
+/usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" show "$out/matrix" "$out"
+
 echo
 msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
 	"$out/neopixel-led0.png, $out/logic-uart.png, $out/logic-spi.png, $out/logic.png;" \
 	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
 	"$out/logic.sr"
+msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \
 	"$out/ws281x-strings.gif, $out/ws281x-strings-wave.png; VCD: $out/ws281x-leds.vcd," \
 	"$out/ws281x-strings.vcd"

@@ -1,0 +1,154 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only
+"""make demo's matrix part, host side (scripts/demo.sh).
+
+    hub75_demo.py frames DIR
+        the frames the guest draws (tests/vm/demo/matrix): DIR/picture.raw,
+        a 64x32 XRGB8888 picture, and DIR/scroll-NN.raw, text scrolling
+        across the panel (drawn with python3-pil's built-in font)
+    hub75_demo.py show ARTIFACTS OUTDIR
+        every picture the guest recorded (hub75.json, NAME.trace) decoded
+        from the simulated pins by tools/hub75-decode.py and compared with
+        what was drawn, pixel by pixel (drivers/hub75/tests/hub75_pictures.py);
+        then drawn as the panel would look: OUTDIR/matrix-picture.png,
+        matrix-scroll.gif and matrix-scroll.png (a frame per row), and the
+        picture in the terminal.  Exits 1 unless every pixel of every frame
+        is exact.
+
+Decoded levels are linear light (the driver applies CIE 1931 lightness
+correction); the pictures show them as the eye sees them: each level back
+through CIE 1931 lightness to an 8-bit value."""
+import json
+import os
+import struct
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hub75_pictures import check_picture  # noqa: E402
+
+W, H = 64, 32
+TEXT = "HUB75 on a BeagleBone PRU"
+STEP = 6			# pixels the text moves per frame
+SCALE = 8			# pixels per LED in the pictures
+
+
+def xrgb(img):
+    """XRGB8888 little-endian bytes of a PIL RGB image."""
+    return b"".join(struct.pack("<I", r << 16 | g << 8 | b) for r, g, b in img.getdata())
+
+
+def frames(outdir):
+    from PIL import Image, ImageDraw, ImageFont
+    os.makedirs(outdir, exist_ok=True)
+    font = ImageFont.load_default()
+    # the picture: a sunset over hills, a sun, the board's name
+    pic = Image.new("RGB", (W, H))
+    d = ImageDraw.Draw(pic)
+    for y in range(H):
+        d.line([(0, y), (W - 1, y)], fill=(40 + 6 * y, 20 + 3 * y, 120 - 3 * y))
+    d.ellipse([40, 4, 56, 20], fill=(255, 200, 40))
+    d.polygon([(0, 31), (0, 22), (14, 16), (30, 24), (46, 19), (63, 25), (63, 31)],
+              fill=(20, 110, 40))
+    d.text((2, 1), "PRU", font=font, fill=(255, 255, 255))
+    with open(os.path.join(outdir, "picture.raw"), "wb") as f:
+        f.write(xrgb(pic))
+    # the text, scrolling from the right edge until it has left on the left
+    tw = font.getbbox(TEXT)[2]
+    n = 0
+    for x in range(W, -tw - 1, -STEP):
+        fr = Image.new("RGB", (W, H), (0, 0, 40))
+        d = ImageDraw.Draw(fr)
+        d.rectangle([0, 0, W - 1, 3], fill=(255, 0, 0))
+        d.rectangle([0, 28, W - 1, 31], fill=(0, 0, 255))
+        for i, ch in enumerate(TEXT):
+            hue = [(255, 255, 0), (0, 255, 255), (255, 128, 255), (255, 255, 255)][i % 4]
+            d.text((x + font.getlength(TEXT[:i]), 10), ch, font=font, fill=hue)
+        with open(os.path.join(outdir, "scroll-%02d.raw" % n), "wb") as f:
+            f.write(xrgb(fr))
+        n += 1
+    print("hub75_demo: a picture and %d frames of scrolling text in %s" % (n, outdir))
+
+
+def perceived(level, planes):
+    """The 8-bit value whose CIE 1931 luminance is LEVEL (of 2^planes - 1)."""
+    y = level / ((1 << planes) - 1)
+    lstar = 116 * y ** (1 / 3) - 16 if y > 0.008856 else 903.3 * y
+    return max(0, min(255, int(round(lstar * 255 / 100))))
+
+
+def panel(levels, planes):
+    """A picture of the panel: each LED a round dot on black."""
+    from PIL import Image, ImageDraw
+    img = Image.new("RGB", (len(levels[0]) * SCALE, len(levels) * SCALE), (8, 8, 8))
+    d = ImageDraw.Draw(img)
+    for y, row in enumerate(levels):
+        for x, px in enumerate(row):
+            col = tuple(perceived(v, planes) for v in px)
+            d.ellipse([x * SCALE + 1, y * SCALE + 1, x * SCALE + SCALE - 2,
+                       y * SCALE + SCALE - 2], fill=col)
+    return img
+
+
+def terminal(levels, planes):
+    """The picture in a terminal: two LEDs per character (24-bit colour)."""
+    for y in range(0, len(levels), 2):
+        line = ""
+        for x in range(len(levels[0])):
+            top = [perceived(v, planes) for v in levels[y][x]]
+            bot = [perceived(v, planes) for v in levels[y + 1][x]]
+            line += "\033[38;2;%d;%d;%dm\033[48;2;%d;%d;%dm\u2580" % tuple(top + bot)
+        print(line + "\033[0m")
+
+
+def show(art, outdir):
+    from PIL import Image
+    with open(os.path.join(art, "hub75.json")) as f:
+        pics = json.load(f)
+    fails = []
+
+    def check(name, cond, detail=""):
+        if not cond:
+            fails.append(name)
+            print("hub75_demo: FAIL: %s: %s" % (name, detail))
+        return cond
+
+    decoded, exact = {}, 0
+    for m in pics:
+        before = len(fails)
+        levels = check_picture(art, m, check)
+        if check("%s decoded" % m["name"], levels is not None):
+            decoded[m["name"]] = (levels, m["planes"])
+        exact += len(fails) == before
+    if "picture" in decoded:
+        terminal(*decoded["picture"])
+        panel(*decoded["picture"]).save(os.path.join(outdir, "matrix-picture.png"))
+    scroll = [panel(*decoded[m["name"]]) for m in pics
+              if m["name"].startswith("scroll-") and m["name"] in decoded]
+    if scroll:
+        scroll[0].save(os.path.join(outdir, "matrix-scroll.gif"), save_all=True,
+                       append_images=scroll[1:], duration=120, loop=0)
+        w, h = scroll[0].size
+        strip = Image.new("RGB", (w, h * len(scroll)))
+        for i, fr in enumerate(scroll):
+            strip.paste(fr, (0, i * h))
+        strip.save(os.path.join(outdir, "matrix-scroll.png"))
+    print("hub75_demo: %d pictures decoded from the pins, %d of them exact to every pixel's "
+          "level" % (len(pics), exact))
+    if fails or len(pics) < 2:
+        print("hub75_demo: the panel did not show what was drawn")
+        return 1
+    return 0
+
+
+def main(argv):
+    if len(argv) == 3 and argv[1] == "frames":
+        frames(argv[2])
+        return 0
+    if len(argv) == 4 and argv[1] == "show":
+        return show(argv[2], argv[3])
+    print(__doc__, file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
