@@ -16,18 +16,29 @@
 #include "hub75_conv.h"
 
 /*
- * The plane order: the longest plane, the shortest, the second longest,
- * the second shortest ...  Each row's lit time is then spread over the
- * refresh instead of coming in one piece (Documentation/hub75.rst).
+ * Once @planes, @entry_bytes and @lut are set: the plane order - the
+ * longest plane, the shortest, the second longest, the second shortest ...:
+ * each row's lit time is then spread over the refresh instead of coming in
+ * one piece (Documentation/hub75.rst) - and @spread, which hub75_convert()
+ * ORs together, a word per lanes planes, into the entries of six lines.
  */
-void hub75_layout_order(struct hub75_layout *l)
+void hub75_layout_finish(struct hub75_layout *l)
 {
-	unsigned int k, lo = 0, hi = l->planes;
+	unsigned int k, lo = 0, hi = l->planes, v, p;
 
 	for (k = 0; k < l->planes; k++)
 		l->order[k] = k % 2 ? lo++ : --hi;
 	for (k = 0; k < l->planes; k++)
 		l->block_of_plane[l->order[k]] = k;
+	l->lanes = 8 / l->entry_bytes;
+	for (v = 0; v < 256; v++) {
+		for (k = 0; k < HUB75_SPREAD_WORDS; k++)
+			l->spread[v][k] = 0;
+		for (p = 0; p < l->planes; p++)
+			if (l->lut[v] >> p & 1)
+				l->spread[v][p / l->lanes] |=
+					1ull << (p % l->lanes * 8 * l->entry_bytes);
+	}
 }
 
 /* round(num / den), halves up, without a 64-bit division (32-bit ARM) */
@@ -78,16 +89,15 @@ size_t hub75_buffer_size(const struct hub75_layout *l)
 	return (size_t)l->planes * l->rows * l->row_bytes;
 }
 
-/* The six levels of clock x of address row r */
-static void hub75_levels(const struct hub75_layout *l, const u8 *src, unsigned int pitch,
-			 enum hub75_format format, unsigned int x, unsigned int r,
-			 unsigned int *lv)
+/* The six 8-bit components of clock x of address row r */
+static void hub75_components(const struct hub75_layout *l, const u8 *src, unsigned int pitch,
+			     enum hub75_format format, unsigned int x, unsigned int r, u8 *v)
 {
-	unsigned int half, c;
+	unsigned int half;
 
 	for (half = 0; half < 2; half++) {
 		const u8 *line = src + (size_t)(r + half * l->rows) * pitch;
-		unsigned int rgb[3];
+		u8 *rgb = v + 3 * half;
 
 		if (format == HUB75_RGB565) {
 			u16 p = line[2 * x] | line[2 * x + 1] << 8;
@@ -102,8 +112,6 @@ static void hub75_levels(const struct hub75_layout *l, const u8 *src, unsigned i
 			rgb[1] = line[4 * x + 1];
 			rgb[2] = line[4 * x];
 		}
-		for (c = 0; c < 3; c++)
-			lv[half * 3 + c] = l->lut[rgb[c]];
 	}
 }
 
@@ -119,6 +127,10 @@ static void hub75_levels(const struct hub75_layout *l, const u8 *src, unsigned i
  * Each changed pixel shares its blocks' entries with the pixel @rows lines
  * above or below: both are read from @src, so @src must hold the whole
  * current image, not only @rect.
+ *
+ * Per entry, each word of @spread of the six components, shifted by their
+ * lines' bits, ORed together: lane q of word k is then the entry of plane
+ * k * lanes + q.
  */
 void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		   unsigned int pitch, enum hub75_format format,
@@ -126,28 +138,43 @@ void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 {
 	unsigned int x1 = rect->x1, x2 = rect->x2 < l->width ? rect->x2 : l->width;
 	unsigned int y2 = rect->y2 < l->height ? rect->y2 : l->height;
+	size_t plane_bytes = (size_t)l->rows * l->row_bytes;
+	unsigned int bits[HUB75_LINES];
 	bool touched[HUB75_MAX_ROWS] = { };
-	unsigned int y, r, x, p, c;
+	unsigned int y, r, x, p, c, k;
+	u8 *blocks[HUB75_MAX_PLANES];
 
+	for (p = 0; p < l->planes; p++)
+		blocks[p] = buf + l->block_of_plane[p] * plane_bytes;
+	for (c = 0; c < HUB75_LINES; c++)
+		bits[c] = l->line_bit[c];
 	for (y = rect->y1; y < y2; y++)
 		touched[y % l->rows] = true;
 	for (r = 0; r < l->rows; r++) {
 		if (!touched[r])
 			continue;
 		for (x = x1; x < x2; x++) {
-			unsigned int lv[HUB75_LINES];
+			size_t off = (size_t)r * l->row_bytes + (size_t)x * l->entry_bytes;
+			u8 v[HUB75_LINES];
 
-			hub75_levels(l, src, pitch, format, x, r, lv);
-			for (p = 0; p < l->planes; p++) {
-				size_t off = ((size_t)l->block_of_plane[p] * l->rows + r) *
-					     l->row_bytes + (size_t)x * l->entry_bytes;
-				unsigned int e = 0;
+			hub75_components(l, src, pitch, format, x, r, v);
+			for (k = 0, p = 0; p < l->planes; k++) {
+				unsigned int end = p + l->lanes;
+				u64 w = 0;
 
+				if (end > l->planes)
+					end = l->planes;
 				for (c = 0; c < HUB75_LINES; c++)
-					e |= ((lv[c] >> p) & 1) << l->line_bit[c];
-				buf[off] = e;
-				if (l->entry_bytes == 2)
-					buf[off + 1] = e >> 8;
+					w |= l->spread[v[c]][k] << bits[c];
+				if (l->entry_bytes == 1) {
+					for (; p < end; p++, w >>= 8)
+						blocks[p][off] = w;
+				} else {
+					for (; p < end; p++, w >>= 16) {
+						blocks[p][off] = w;
+						blocks[p][off + 1] = w >> 8;
+					}
+				}
 			}
 		}
 	}

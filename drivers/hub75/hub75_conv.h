@@ -27,6 +27,9 @@ enum hub75_line {
 	HUB75_LINES
 };
 
+/* u64 words of struct hub75_layout's @spread: 16-bit lanes, 4 a word */
+#define HUB75_SPREAD_WORDS	((HUB75_MAX_PLANES + 3) / 4)
+
 /* Brightness correction of each 8-bit component */
 enum hub75_correction {
 	HUB75_CIE1931,
@@ -46,6 +49,10 @@ enum hub75_correction {
  * @line_bit: bit of each data line in a block's entry
  * @lut: level (0 .. 2^@planes - 1) of each 8-bit component value
  * @block_of_plane: position of each plane in @order
+ * @lanes: planes per word of @spread: 8 / @entry_bytes
+ * @spread: for each 8-bit component value, its level's bits spread out:
+ *	bit q * 8 * @entry_bytes of word k is bit k * @lanes + q of the
+ *	level (shifted by a line's bit, each lane is that line's entry)
  */
 struct hub75_layout {
 	unsigned int width;
@@ -58,6 +65,8 @@ struct hub75_layout {
 	u8 line_bit[HUB75_LINES];
 	u16 lut[256];
 	u8 block_of_plane[HUB75_MAX_PLANES];
+	unsigned int lanes;
+	u64 spread[256][HUB75_SPREAD_WORDS];
 };
 
 /**
@@ -67,8 +76,8 @@ struct hub75_rect {
 	unsigned int x1, y1, x2, y2;
 };
 
-void hub75_layout_order(struct hub75_layout *l);
 void hub75_layout_lut(struct hub75_layout *l, enum hub75_correction corr);
+void hub75_layout_finish(struct hub75_layout *l);
 size_t hub75_buffer_size(const struct hub75_layout *l);
 void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		   unsigned int pitch, enum hub75_format format,

@@ -676,7 +676,7 @@ static int hub75_parse(struct hub75 *h)
 				     "%u pixels a row: the PRU takes them %u at a time, %u at most\n",
 				     l->width, HUB75_CHUNK_BYTES / l->entry_bytes,
 				     HUB75_MAX_ROW_BYTES / l->entry_bytes);
-	hub75_layout_order(l);
+	hub75_layout_finish(l);
 
 	if (p->data_mode == HUB75_DATA_R30) {
 		/* 4 + 2 * delay cycles a pixel, the nearest clock not above */

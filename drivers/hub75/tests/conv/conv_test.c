@@ -45,7 +45,7 @@ static enum hub75_correction corr(const char *s)
 
 int main(int argc, char **argv)
 {
-	struct hub75_layout l = { 0 };
+	static struct hub75_layout l;
 	struct hub75_rect all, rect;
 	enum hub75_format fmt;
 	unsigned int i, bpp;
@@ -68,8 +68,8 @@ int main(int argc, char **argv)
 		l = (struct hub75_layout){ .width = 64, .height = 32, .rows = 16, .planes = 8,
 					   .entry_bytes = 1, .row_bytes = 64 };
 		memcpy(l.line_bit, line_bits, sizeof(line_bits));
-		hub75_layout_order(&l);
 		hub75_layout_lut(&l, HUB75_CIE1931);
+		hub75_layout_finish(&l);
 		for (i = 0; i < 64 * 32; i++)
 			img[i] = i * 2654435761u;
 		buf = calloc(1, hub75_buffer_size(&l));
@@ -91,8 +91,8 @@ int main(int argc, char **argv)
 	for (i = 0; i < HUB75_LINES; i++)
 		l.line_bit[i] = atoi(argv[8 + i]);
 	l.row_bytes = l.width * l.entry_bytes;
-	hub75_layout_order(&l);
 	hub75_layout_lut(&l, corr(argv[3]));
+	hub75_layout_finish(&l);
 	fmt = strcmp(argv[14], "rgb565") ? HUB75_XRGB8888 : HUB75_RGB565;
 	bpp = fmt == HUB75_RGB565 ? 2 : 4;
 	size = (size_t)l.width * l.height * bpp;
