@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-only
-"""Helpers for the rpmsg VM tests (guest side, python3 of the guest)."""
+"""Helpers for the VM tests (guest side, python3 of the guest): results,
+sysfs attributes, the PRUs' remoteproc devices, rpmsg character devices."""
 import errno
 import glob
 import os
@@ -27,6 +28,22 @@ def info(text):
 
 def done():
     sys.exit(1 if failed else 0)
+
+
+def write_attr(path, value):
+    """errno of writing value to a sysfs file, 0 if it worked."""
+    try:
+        with open(path, "w") as f:
+            f.write(value)
+        return 0
+    except OSError as e:
+        return e.errno
+
+
+def read_attr(path):
+    """A sysfs file's value, without the newline."""
+    with open(path) as f:
+        return f.read().strip()
 
 
 def pru_rproc(core):

@@ -9,24 +9,11 @@ import os
 import struct
 import time
 
+from rpmsg import read_attr, write_attr
+
 SIM = glob.glob("/sys/kernel/debug/pru_sim/*/stats")[0].rsplit("/", 1)[0]
 DRV = "/sys/bus/platform/drivers/hub75"
 DEVS = "/sys/bus/platform/devices"
-
-
-def write_attr(path, value):
-    """0, or the errno of writing VALUE to PATH."""
-    try:
-        with open(path, "w") as f:
-            f.write(value)
-        return 0
-    except OSError as e:
-        return e.errno
-
-
-def read_attr(path):
-    with open(path) as f:
-        return f.read().strip()
 
 
 def sim_cycles():

@@ -10,6 +10,7 @@ import glob
 import os
 
 import trace
+from rpmsg import write_attr
 
 DRV = "/sys/bus/platform/drivers/ws281x"
 T0H, T1H = 70, 140		# PRU cycles high for a 0 and a 1
@@ -23,24 +24,15 @@ def bound():
                   if os.path.islink(p) and not p.endswith("/module"))
 
 
-def _write(path, value):
-    try:
-        with open(path, "w") as f:
-            f.write(value)
-        return 0
-    except OSError as e:
-        return e.errno
-
-
 def bind_only(name):
     """Unbind every other ws281x controller (the VM's tree has several that
     share PRU0, as overlays on a board would) and bind NAME; return its
     /dev node, or None."""
     for d in bound():
         if d != name:
-            _write(DRV + "/unbind", d)
+            write_attr(DRV + "/unbind", d)
     if name not in bound():
-        _write(DRV + "/bind", name)
+        write_attr(DRV + "/bind", name)
     nodes = glob.glob("/sys/bus/platform/devices/%s/ws281x/ws281x*" % name)
     if name not in bound() or len(nodes) != 1:
         return None
