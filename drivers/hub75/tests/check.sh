@@ -8,9 +8,9 @@
 #  - the firmware (hub75-pru0.elf, hub75-pru1.elf) in the prusim host tool
 #    on seven layouts: every pixel decoded exactly, every lit time, the
 #    refresh lengths, START's checks (hub75_sim.py);
-#  - the conversion, hub75_conv.c built for the host, against
-#    hub75_model.py: every level, frame buffers, partial updates
-#    (tests/conv/conv_check.py).
+#  - the conversion, hub75_conv.c built for the host with AddressSanitizer
+#    and UBSan, against hub75_model.py: every level, frame buffers, partial
+#    updates (tests/conv/conv_check.py).
 # Builds what it needs (prusim, the PRU toolchain, the two images) from a
 # clean clone.  Prints PASS:/FAIL: lines; exits non-zero on any failure.
 #
@@ -29,7 +29,11 @@ trap 'rm -rf "$work"' EXIT
 rc=0
 python3 drivers/hub75/tests/hub75_decode_selftest.py || rc=1
 
+# with AddressSanitizer and UBSan: an access outside the frame buffer, the
+# image or the tables, or a leak, fails the run
+san="-fsanitize=address,undefined -fno-sanitize-recover=all"
 if make -s -C drivers/hub75/tests/conv O="$work/conv" "$work/conv/conv_test" \
+	CFLAGS="-O1 -g -fno-omit-frame-pointer $san" LDFLAGS="$san" \
 	>"$work/conv.log" 2>&1; then
 	python3 drivers/hub75/tests/conv/conv_check.py "$work/conv/conv_test" "$work/conv" || rc=1
 else

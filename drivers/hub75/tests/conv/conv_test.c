@@ -77,6 +77,7 @@ int main(int argc, char **argv)
 		for (i = 0; i < n; i++)
 			hub75_convert(&l, buf, img, 64 * 4, HUB75_XRGB8888, &all);
 		printf("%u\n", buf[i % hub75_buffer_size(&l)]);
+		free(buf);
 		return 0;
 	}
 	if ((argc != 16 && argc != 21) || strcmp(argv[1], "frame")) {
@@ -105,7 +106,10 @@ int main(int argc, char **argv)
 					    atoi(argv[19]) };
 		b = slurp(argv[20], size);
 		hub75_convert(&l, buf, b, l.width * bpp, fmt, &rect);
+		free(b);
 	}
 	fwrite(buf, 1, hub75_buffer_size(&l), stdout);
+	free(buf);
+	free(a);
 	return 0;
 }
