@@ -105,3 +105,23 @@ prusim_and_images() {
 		return 1
 	fi
 }
+
+# callgrind_ir FN OUT CMD... - the instructions function FN executes while
+# CMD runs under valgrind's callgrind (only FN and what it calls are
+# counted), printed on stdout; CMD's output and callgrind's go to OUT.log,
+# OUT.valgrind.log and OUT.callgrind.  On failure: the logs and a FAIL:
+# line, return 1.  The benches' exact count of the ARM's work (host builds).
+callgrind_ir() {
+	local fn=$1 out=$2 ir
+	shift 2
+	command -v valgrind >/dev/null || need_pkgs valgrind
+	if ! valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
+		--callgrind-out-file="$out.callgrind" "$@" >"$out.log" 2>"$out.valgrind.log"; then
+		cat "$out.log" "$out.valgrind.log"
+		echo "FAIL: $* under callgrind"
+		return 1
+	fi
+	ir=$(sed -n 's/^summary: *\([0-9]*\)$/\1/p' "$out.callgrind")
+	[ -n "$ir" ] || { echo "FAIL: no callgrind summary for $fn"; return 1; }
+	echo "$ir"
+}

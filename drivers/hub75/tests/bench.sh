@@ -20,7 +20,6 @@ set -euo pipefail
 . "$(dirname "$0")/../../../scripts/lib.sh"
 cd "$PRUKIT_TOP"
 
-command -v valgrind >/dev/null || need_pkgs valgrind
 command -v python3 >/dev/null || need_pkgs python3
 
 out=$PRUKIT_TOP/out/tests/hub75-bench
@@ -33,15 +32,10 @@ make -s -C drivers/hub75/tests/conv O="$out" "$out/conv_test" >"$out/conv-build.
 	exit 1
 }
 frames=10
-if ! valgrind --tool=callgrind --collect-atstart=no --toggle-collect=hub75_convert \
-	--callgrind-out-file="$out/callgrind.conv" "$out/conv_test" bench "$frames" \
-	>"$out/conv_bench.log" 2>"$out/valgrind.log"; then
-	cat "$out/conv_bench.log" "$out/valgrind.log"
-	echo "FAIL: conv_test bench under callgrind"
+ir=$(callgrind_ir hub75_convert "$out/conv_bench" "$out/conv_test" bench "$frames") || {
+	echo "$ir"
 	exit 1
-fi
-ir=$(sed -n 's/^summary: *\([0-9]*\)$/\1/p' "$out/callgrind.conv")
-[ -n "$ir" ] || { echo "FAIL: no callgrind summary for hub75_convert"; exit 1; }
+}
 cc=$(${CC:-cc} --version | head -n 1)
 awk -v n="$ir" -v f="$frames" -v arch="$(uname -m)" -v cc="$cc" 'BEGIN {
 	printf "BENCH: hub75 conversion of a damaged frame into bit planes: %.1f instructions " \

@@ -19,7 +19,6 @@ set -euo pipefail
 . "$(dirname "$0")/../../../scripts/lib.sh"
 cd "$PRUKIT_TOP"
 
-command -v valgrind >/dev/null || need_pkgs valgrind
 command -v python3 >/dev/null || need_pkgs python3
 
 out=$PRUKIT_TOP/out/tests/ws281x-bench
@@ -35,15 +34,10 @@ declare -A ir
 for which in new legacy; do
 	fn=ws281x_convert
 	[ "$which" = legacy ] && fn=ws281x_legacy_convert
-	if ! valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
-		--callgrind-out-file="$out/callgrind.$which" "$out/conv_bench" "$which" \
-		>"$out/conv_bench.$which.log" 2>"$out/valgrind.$which.log"; then
-		cat "$out/conv_bench.$which.log" "$out/valgrind.$which.log"
-		echo "FAIL: conv_bench $which under callgrind"
+	ir[$which]=$(callgrind_ir "$fn" "$out/conv_bench.$which" "$out/conv_bench" "$which") || {
+		echo "${ir[$which]}"
 		exit 1
-	fi
-	ir[$which]=$(sed -n 's/^summary: *\([0-9]*\)$/\1/p' "$out/callgrind.$which")
-	[ -n "${ir[$which]}" ] || { echo "FAIL: no callgrind summary for $fn"; exit 1; }
+	}
 done
 leds=$(sed -n 's/.* \([0-9]*\) LEDs, checksum.*/\1/p' "$out/conv_bench.new.log")
 cc=$(${CC:-cc} --version | head -n 1)
