@@ -6,7 +6,7 @@
 #    (hub75_decode_selftest.py), faults included: the decoder the other
 #    checks trust;
 #  - the firmware (hub75-pru0.elf, hub75-pru1.elf) in the prusim host tool
-#    on seven layouts: every pixel decoded exactly, every lit time, the
+#    on eight layouts: every pixel decoded exactly, every lit time, the
 #    refresh lengths, START's checks (hub75_sim.py);
 #  - the conversion, hub75_conv.c built for the host with AddressSanitizer
 #    and UBSan, against hub75_model.py: every level, frame buffers, partial
@@ -14,7 +14,7 @@
 # Builds what it needs (prusim, the PRU toolchain, the two images) from a
 # clean clone.  Prints PASS:/FAIL: lines; exits non-zero on any failure.
 #
-# prukit-check-min: 95
+# prukit-check-min: 104
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"

@@ -211,14 +211,16 @@ def main():
     r["64x64"] = case(prusim, fw, work, "bone-r30 64x64 1/32 scan (E line), 6 planes", BONE, 64, 64, 32, 6, 26)
     r["32x16"] = case(prusim, fw, work, "bone-r30 32x16 1/8 scan, 25 MHz, lsb 13", BONE, 32, 16, 8, 8, 13,
                       clk_delay=2)
+    r["33mhz"] = case(prusim, fw, work, "bone-r30 64x32 8 planes, 33 MHz (clock delay 1)", BONE,
+                      64, 32, 16, 8, 26, clk_delay=1)
     r["pocket"] = case(prusim, fw, work, "pocketscroller 64x32 8 planes", POCKET, 64, 32, 16, 8, 26)
     r["pocket-dim"] = case(prusim, fw, work, "pocketscroller 64x32, lsb 3 (dim)", POCKET, 64, 32, 16, 8, 3)
     bad_start(prusim, fw, work)
-    for k in ("bone", "pocket"):
+    for k, period in (("bone", 10), ("33mhz", 6), ("pocket", 16)):
         if r[k]:
             clk = r[k]["clk"]
-            check("%s: pixel clock within a row" % k,
-                  clk["min_period"] == (10 if k == "bone" else 16), str(clk["min_period"]))
+            check("%s: pixel clock within a row (%d cycles)" % (k, period),
+                  clk["min_period"] == period, str(clk["min_period"]))
     if bench:
         # the yardstick: eight chained 64x32 panels at 8 bit planes
         r["chain8"] = case(prusim, fw, work, "bone-r30 chain of 8 (512x32)", BONE, 512, 32, 16, 8,
@@ -228,6 +230,7 @@ def main():
                 "chain8": "all-R30 map, 8 chained 64x32 panels (512x32), 8 planes",
                 "64x64": "all-R30 map, 64x64 1/32 scan, 6 planes",
                 "32x16": "all-R30 map, 32x16 1/8 scan, 8 planes, 25 MHz clock",
+                "33mhz": "all-R30 map, one 64x32 panel, 8 planes, the fastest clock (delay 1)",
                 "pocket": "PocketScroller map (data on GPIO bank 1), 64x32, 8 planes"}
         for k, v in r.items():
             if v and k in what:
