@@ -90,6 +90,9 @@ struct pru_sim_input {
  * @count: valid records (at most PRU_SIM_TRACE_LEN)
  * @dropped: records overwritten since the last clear
  * @origin: cycle of the last core start
+ * @until: changes from this cycle on are not recorded (0: no limit); set
+ *	by "clear N", so that a reader slower than the simulation still gets
+ *	exactly the N cycles it asked for
  */
 struct pru_sim_trace {
 	struct prusim_trace_rec *rec;
@@ -97,6 +100,7 @@ struct pru_sim_trace {
 	unsigned int count;
 	u64 dropped;
 	u64 origin;
+	u64 until;
 };
 
 #define PRU_SIM_TRACE_LEN	BIT(18)

@@ -6,7 +6,9 @@
  *   trace      (r)  binary pin trace (sim/prusim_trace.h): the last
  *                   PRU_SIM_TRACE_LEN output changes; tools/prusim converts
  *                   it to VCD (prusim --trace-in FILE --vcd OUT)
- *              (w)  "clear" empties it
+ *              (w)  "clear" empties it; "clear N" also records only the
+ *                   next N cycles (a reader slower than the simulation gets
+ *                   exactly that window, nothing dropped)
  *   input/r31-0, input/r31-1, input/gpio0..gpio3
  *              (w)  a stimulus in the prusim text format ("cycle value"
  *                   lines, "repeat PERIOD"); replaces the port's input when
@@ -28,11 +30,14 @@
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
+#include <linux/ctype.h>
 #include <linux/debugfs.h>
-#include <linux/math64.h>
 #include <linux/fs.h>
+#include <linux/kernel.h>
+#include <linux/math64.h>
 #include <linux/seq_file.h>
 #include <linux/slab.h>
+#include <linux/string.h>
 #include <linux/time64.h>
 #include <linux/uaccess.h>
 #include <linux/vmalloc.h>
@@ -47,6 +52,8 @@ void pru_sim_trace_pin(struct pru_sim *sim, u64 cycle, unsigned int pin, bool le
 	struct pru_sim_trace *t = &sim->trace;
 	struct prusim_trace_rec *r = &t->rec[t->head];
 
+	if (t->until && cycle >= t->until)
+		return;
 	r->cycle = cycle;
 	r->pin = pin;
 	r->level = level;
@@ -165,7 +172,7 @@ static int pru_sim_trace_open(struct inode *inode, struct file *file)
 	hdr->origin = t->origin;
 	hdr->count = t->count;
 	hdr->dropped = t->dropped;
-	hdr->end = sim->s->now;
+	hdr->end = t->until ? min(sim->s->now, t->until) : sim->s->now;
 	first = (t->head + PRU_SIM_TRACE_LEN - t->count) % PRU_SIM_TRACE_LEN;
 	n = min_t(unsigned int, t->count, PRU_SIM_TRACE_LEN - first);
 	memcpy(rec, &t->rec[first], n * sizeof(*rec));
@@ -191,17 +198,24 @@ static ssize_t pru_sim_trace_write(struct file *file, const char __user *ubuf, s
 				   loff_t *ppos)
 {
 	struct pru_sim *sim = file_inode(file)->i_private;
-	char buf[8] = { };
+	char buf[32] = { };
+	char *arg;
+	u64 window = 0;
 
 	if (len > sizeof(buf) - 1 || copy_from_user(buf, ubuf, len))
 		return -EINVAL;
-	if (strcmp(strim(buf), "clear"))
+	arg = strim(buf);
+	if (strncmp(arg, "clear", 5) || (arg[5] && !isspace(arg[5])))
+		return -EINVAL;
+	arg = skip_spaces(arg + 5);
+	if (*arg && (kstrtou64(arg, 0, &window) || !window))
 		return -EINVAL;
 
 	mutex_lock(&sim->lock);
 	sim->trace.head = 0;
 	sim->trace.count = 0;
 	sim->trace.dropped = 0;
+	sim->trace.until = window ? sim->s->now + window : 0;
 	mutex_unlock(&sim->lock);
 	return len;
 }
@@ -429,8 +443,8 @@ static int pru_sim_stats_show(struct seq_file *m, void *v)
 			   i, pru_sim_state_name[st.state], st.pc * 4, st.insns, st.stalls,
 			   st.reason[0] ? st.reason : "-");
 	}
-	seq_printf(m, "trace_events %u trace_dropped %llu trace_origin %llu\n",
-		   sim->trace.count, sim->trace.dropped, sim->trace.origin);
+	seq_printf(m, "trace_events %u trace_dropped %llu trace_origin %llu trace_until %llu\n",
+		   sim->trace.count, sim->trace.dropped, sim->trace.origin, sim->trace.until);
 	seq_printf(m, "pads %s unmuxed_writes %llu\n", sim->pads_live ? "checked" : "unchecked",
 		   sim->unmuxed_writes);
 	seq_printf(m, "ocp_writes_to_free_pages %llu\n", sim->ocp_free_writes);
