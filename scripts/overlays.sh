@@ -12,7 +12,7 @@
 # --check ("make check"): the build, and
 #  1. the overlays built with the headers of every kernel series below; the
 #     blobs must be identical.
-#  2. The pin table overlays/am335x-pru-pins.tsv checked against each
+#  2. The pin table sim/am335x-pins.tsv checked against each
 #     kernel's am33xx.h, and the pin check of each overlay's blob: the PRU
 #     signals and GPIOs its "prukit-pins:" lines name are muxed to the right
 #     mode by a pinctrl-single group some node's pinctrl-0 applies, r31
@@ -79,7 +79,7 @@ BASE_DTC_FLAGS="-Wno-unit_address_vs_reg -Wno-avoid_unnecessary_addr_size -Wno-a
 	-Wno-interrupt_provider"
 
 OVL_SRC=$PRUKIT_TOP/overlays
-PIN_TABLE=$OVL_SRC/am335x-pru-pins.tsv
+PIN_TABLE=$PRUKIT_TOP/sim/am335x-pins.tsv
 FIXTURES=$PRUKIT_TOP/tests/overlays
 BIND_SRC=$PRUKIT_TOP/Documentation/devicetree/bindings
 OUT=$PRUKIT_TOP/out/overlays
@@ -232,7 +232,7 @@ done
 
 # ---------------------------------------------------------------- pin check
 #
-# The pin table (overlays/am335x-pru-pins.tsv) says which pad carries which
+# The pin table (sim/am335x-pins.tsv) says which pad carries which
 # PRU signal in which mux mode, on which header pin, and which board function
 # already uses it.  An overlay names the signals its firmware uses in
 # "prukit-pins:" lines and the board functions it takes pads from in

@@ -1143,6 +1143,127 @@ int prusim_host_write(struct prusim *s, u32 offset, const void *buf, size_t len)
 	return 0;
 }
 
+/*
+ * Registers the ARM's view models, per block: offsets [start, end) and
+ * whether they may be read and/or written.  Everything else in a block
+ * reads 0 and ignores stores (prusim_host_read()/prusim_host_write()), which
+ * is what an embedder that must flag unmodelled accesses asks about.
+ */
+struct prusim_reg_range {
+	u32 start;
+	u32 end;
+	u8 rw;
+};
+
+#define PRUSIM_RD	1
+#define PRUSIM_WR	2
+#define PRUSIM_RW	(PRUSIM_RD | PRUSIM_WR)
+
+static const struct prusim_reg_range prusim_intc_regs[] = {
+	{ 0x000, 0x004, PRUSIM_RD },	/* REVID */
+	{ 0x004, 0x008, PRUSIM_RW },	/* CR */
+	{ 0x010, 0x014, PRUSIM_RW },	/* GER */
+	{ 0x01c, 0x020, PRUSIM_RW },	/* GNLR */
+	{ 0x020, 0x030, PRUSIM_WR },	/* SISR, SICR, EISR, EICR */
+	{ 0x034, 0x03c, PRUSIM_WR },	/* HIEISR, HIDISR */
+	{ 0x080, 0x084, PRUSIM_RD },	/* GPIR */
+	{ 0x200, 0x208, PRUSIM_RW },	/* SRSR0/1 */
+	{ 0x280, 0x288, PRUSIM_RW },	/* SECR0/1 */
+	{ 0x300, 0x308, PRUSIM_RW },	/* ESR0/1 */
+	{ 0x380, 0x388, PRUSIM_RW },	/* ECR0/1 */
+	{ 0x400, 0x440, PRUSIM_RW },	/* CMR0-15 */
+	{ 0x800, 0x80c, PRUSIM_RW },	/* HMR0-2 */
+	{ 0x900, 0x928, PRUSIM_RD },	/* HIPIR0-9 */
+	{ 0xd00, 0xd08, PRUSIM_RW },	/* SIPR0/1 */
+	{ 0xd80, 0xd88, PRUSIM_RW },	/* SITR0/1 */
+	{ 0x1100, 0x1128, PRUSIM_RW },	/* HINLR0-9 */
+	{ 0x1500, 0x1504, PRUSIM_RW },	/* HIER */
+};
+
+static const struct prusim_reg_range prusim_ctrl_regs[] = {
+	{ 0x00, 0x04, PRUSIM_RW },	/* CONTROL */
+	{ 0x04, 0x08, PRUSIM_RD },	/* STATUS (pc) */
+	{ 0x08, 0x14, PRUSIM_RW },	/* WAKEUP_EN, CYCLE, STALL */
+	{ 0x20, 0x30, PRUSIM_RW },	/* CTBIR0/1, CTPPR0/1 */
+	{ 0x400, 0x500, PRUSIM_RW },	/* debug: GPREG0-31, CT_REG0-31 */
+};
+
+static const struct prusim_reg_range prusim_cfg_regs[] = {
+	{ 0x00, 0x04, PRUSIM_RD },	/* REVID */
+	{ 0x04, PRUSIM_CFG_END, PRUSIM_RW },	/* SYSCFG .. PIN_MX */
+};
+
+static const struct prusim_reg_range prusim_iep_regs[] = {
+	{ 0x00, 0x10, PRUSIM_RW },	/* GLOBAL_CFG, GLOBAL_STATUS, COMPEN, COUNT */
+	{ 0x40, 0x44, PRUSIM_RW },	/* CMP_CFG */
+	{ 0x48, 0x68, PRUSIM_RW },	/* CMP0-7 */
+};
+
+static bool prusim_regs_cover(const struct prusim_reg_range *r, unsigned int n, u32 off,
+			      size_t len, u8 rw)
+{
+	u32 end = off + len;
+	unsigned int i;
+
+	/* every byte must lie in a range that allows the access */
+	while (off < end) {
+		for (i = 0; i < n; i++) {
+			if (off >= r[i].start && off < r[i].end && (r[i].rw & rw))
+				break;
+		}
+		if (i == n)
+			return false;
+		off = r[i].end < end ? r[i].end : end;
+	}
+	return true;
+}
+
+/**
+ * prusim_host_modelled() - does the ARM's view model this access?
+ * @offset: offset from the subsystem base (see prusim_host_read())
+ * @len: bytes, 1..4 for registers
+ * @write: a store rather than a load
+ *
+ * The memories are modelled throughout; the register blocks register by
+ * register.  prusim_host_read() and prusim_host_write() accept an access
+ * this refuses (it reads 0, a store is ignored): an embedder uses this to
+ * report, and to fail a test on, what the model does not know.
+ *
+ * Return: true if every byte of the access is modelled.
+ */
+bool prusim_host_modelled(u32 offset, size_t len, bool write)
+{
+	u8 rw = write ? PRUSIM_WR : PRUSIM_RD;
+	u32 base = offset & ~(PRUSIM_BLOCK_SIZE - 1), off = offset - base;
+
+	if (!len || len > PRUSIM_SHARED_SIZE)
+		return false;
+	if (host_iram_core(offset, len) >= 0)
+		return true;
+	if ((u64)offset + len <= PRUSIM_DRAM1 + PRUSIM_DRAM_SIZE)
+		return (offset < PRUSIM_DRAM1) == (offset + len <= PRUSIM_DRAM1);
+	if (offset >= PRUSIM_SHARED && (u64)offset + len <= PRUSIM_SHARED + PRUSIM_SHARED_SIZE)
+		return true;
+	if ((u64)off + len > PRUSIM_BLOCK_SIZE)
+		return false;
+	switch (base) {
+	case PRUSIM_INTC:
+		return prusim_regs_cover(prusim_intc_regs, ARRAY_SIZE(prusim_intc_regs),
+					 off, len, rw);
+	case PRUSIM_CTRL0:
+	case PRUSIM_CTRL1:
+		return prusim_regs_cover(prusim_ctrl_regs, ARRAY_SIZE(prusim_ctrl_regs),
+					 off, len, rw);
+	case PRUSIM_CFG:
+		return prusim_regs_cover(prusim_cfg_regs, ARRAY_SIZE(prusim_cfg_regs),
+					 off, len, rw);
+	case PRUSIM_IEP:
+		return prusim_regs_cover(prusim_iep_regs, ARRAY_SIZE(prusim_iep_regs),
+					 off, len, rw);
+	}
+	return false;
+}
+
 /**
  * prusim_da_to_va() - host pointer to data memory of a core
  * @s: simulator

@@ -76,6 +76,10 @@ typedef uint64_t u64;
 #define __packed	__attribute__((__packed__))
 #endif
 
+#ifndef ARRAY_SIZE
+#define ARRAY_SIZE(a)	(sizeof(a) / sizeof((a)[0]))
+#endif
+
 static inline u64 prusim_div_u64(u64 dividend, u32 divisor)
 {
 	return dividend / divisor;

@@ -59,7 +59,7 @@ struct pru_sim_r30_pad {
 
 /*
  * PRU outputs and their pads (AM335x datasheet pin attributes; the same
- * rows as overlays/am335x-pru-pins.tsv, which the overlay check uses).
+ * rows as sim/am335x-pins.tsv, which the overlay check uses).
  */
 static const struct pru_sim_r30_pad pru_sim_r30_pads[PRUSIM_NUM_CORES][32] = {
 	[0] = {
