@@ -3,7 +3,9 @@
 #
 # checkpatch.pl --strict over every C source and header of prukit (kernel
 # code, simulator, tools and PRU firmware alike), with the checkpatch.pl of
-# Debian's linux-source-6.1.  One PASS/FAIL line per file.
+# Debian's linux-source-6.1; and the QEMU device in qemu/, which is QEMU
+# code, with QEMU's own checkpatch.pl --strict (of the QEMU source
+# scripts/qemu-build.sh builds).  One PASS/FAIL line per file.
 #
 # Exceptions, and only these:
 # - include/compat.h exists to compare LINUX_VERSION_CODE, so the two
@@ -20,6 +22,8 @@ set -euo pipefail
 src=$("$PRUKIT_TOP/scripts/linux-source.sh" 6.1)
 cp=(perl "$src/scripts/checkpatch.pl" --strict --no-tree --terse --show-types --no-summary
     --max-line-length=100 -f)
+qsrc=$("$PRUKIT_TOP/scripts/qemu-build.sh" --source)
+qcp=(perl "$qsrc/scripts/checkpatch.pl" --strict --no-tree --terse --no-summary --color=never -f)
 
 # check_file FILE: checkpatch's findings on FILE, then its PASS:/FAIL: line.
 check_file() {
@@ -31,6 +35,15 @@ check_file() {
 	sim/prusim_platform.h)
 		# Its userspace half defines what <linux/compiler.h> would.
 		ignore=(--ignore PREFER_KERNEL_TYPES,PREFER_DEFINED_ATTRIBUTE_MACRO,COMPLEX_MACRO) ;;
+	qemu/*)
+		if out=$("${qcp[@]}" "$f" 2>&1) && [ -z "$out" ]; then
+			echo "PASS: checkpatch (QEMU's) $f"
+		else
+			printf '%s\n' "$out"
+			echo "FAIL: checkpatch (QEMU's) $f"
+		fi
+		return
+		;;
 	*) ignore=() ;;
 	esac
 	if out=$("${cp[@]}" "${ignore[@]}" "$f" 2>&1) && [ -z "$out" ]; then

@@ -8,6 +8,8 @@
 #   papt ARGS...     apt-get with the private configuration
 #   pcache ARGS...   apt-cache with the private configuration
 #   papt_fetch DIR PKG...  download PKG... and extract them into DIR
+# Sources: bullseye, bookworm and bookworm-backports binaries (amd64,
+# armhf), and bookworm's source packages (scripts/qemu-build.sh).
 
 PRUKIT_APT=$PRUKIT_CACHE/apt
 
@@ -51,15 +53,16 @@ papt_init() {
 deb [arch=amd64,armhf signed-by=$keyring] $mirror bullseye main
 deb [arch=amd64,armhf signed-by=$keyring] $mirror bookworm main
 deb [arch=amd64,armhf signed-by=$keyring] $mirror bookworm-backports main
+deb-src [signed-by=$keyring] $mirror bookworm main
 EOT
 	if ! cmp -s "$PRUKIT_APT/etc/sources.list.new" "$PRUKIT_APT/etc/sources.list"; then
 		mv "$PRUKIT_APT/etc/sources.list.new" "$PRUKIT_APT/etc/sources.list"
-		rm -f "$PRUKIT_APT"/lists/*Packages*
+		rm -f "$PRUKIT_APT"/lists/*Packages* "$PRUKIT_APT"/lists/*Sources*
 	else
 		rm -f "$PRUKIT_APT/etc/sources.list.new"
 	fi
 	if [ -z "$(find "$PRUKIT_APT/lists" -maxdepth 1 -name '*Packages*' -mmin -1440 | head -n 1)" ]; then
-		msg "updating the private apt lists (bullseye, bookworm, bookworm-backports; amd64, armhf)"
+		msg "updating the private apt lists (bullseye, bookworm, bookworm-backports; amd64, armhf; bookworm sources)"
 		run_logged "$PRUKIT_APT/update.log" papt update
 	fi
 }

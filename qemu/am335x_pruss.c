@@ -1,0 +1,1824 @@
+/* SPDX-License-Identifier: GPL-2.0-only */
+/*
+ * AM335x PRU-ICSS, and the parts of the SoC a PRU and its Linux drivers
+ * touch, for prukit's test VM (Documentation/qemu-pruss.rst in prukit)
+ *
+ * The two PRU cores, their memories, INTC, CTRL/DEBUG, CFG, IEP and the OCP
+ * master port are prukit's cycle-accurate simulator, sim/ (the same sources
+ * as the prusim host tool, compiled here unchanged and used only through
+ * prusim.h); this file puts it at the AM335x's addresses, so that Linux's
+ * own pruss, pruss_intc and pru_rproc drivers run against it as on a board:
+ *
+ *   0x4a300000  PRU-ICSS (512 KiB): prusim_host_read()/prusim_host_write()
+ *   0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
+ *               GPIO banks 0..3 (gpio-omap): OE and the data registers are
+ *               the simulator's, the rest is stored here
+ *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
+ *               reaches the pin trace only through a pad muxed to it
+ *   0x5f000000  prukit's test port: pin trace, input stimulus, statistics
+ *               and timing knobs for tests inside the guest (a guest driver,
+ *               prukit's tests/kmod/prusim_port.c, shows them in debugfs)
+ *
+ * Accesses to the rest of L4_WKUP, L4_PER and L4_FAST, and to registers of
+ * the blocks above that are not modelled, are logged (-d unimp) and counted
+ * in the test port's "stats": a test that makes one fails.
+ *
+ * Outputs: interrupts host_intr0..7 (INTC host interrupts 2..9) and one per
+ * GPIO bank (never raised: GPIO interrupts are not modelled).
+ *
+ * The simulation runs in a thread of its own.  Lock order: the BQL before
+ * the device lock, everywhere.  MMIO handlers run under the BQL and take
+ * the device lock; the thread runs a slice under the device lock only,
+ * drops it between slices (and waits there while an MMIO handler wants it),
+ * and takes the BQL, then the device lock, to change interrupt lines.
+ *
+ * Emulation policy (not a property of the board): while a host interrupt
+ * towards the ARM is pending, or an event the ARM acknowledged is still
+ * masked in its handler, simulated time stands still, up to hold-cap-ms of
+ * host time: the emulated ARM is far slower than a real one relative to the
+ * PRU, and a register-faithful INTC would otherwise merge events a board's
+ * ARM takes one by one.
+ */
+
+#include "qemu/osdep.h"
+#include "qemu/atomic.h"
+#include "qemu/log.h"
+#include "qemu/main-loop.h"
+#include "qemu/module.h"
+#include "qemu/rcu.h"
+#include "qemu/thread.h"
+#include "qemu/timer.h"
+#include "qapi/error.h"
+#include "exec/address-spaces.h"
+#include "exec/memory.h"
+#include "hw/irq.h"
+#include "hw/qdev-properties.h"
+#include "hw/sysbus.h"
+#include "migration/vmstate.h"
+#include "qom/object.h"
+#include "trace.h"
+
+#include "hw/misc/am335x_pruss.h"
+#include "prusim/prusim.h"
+#include "prusim/prusim_stim.h"
+#include "prusim/prusim_trace.h"
+#include "prusim/am335x_pins.h"
+
+OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
+
+/* The AM335x memory map (SPRUH73 chapter 2) */
+#define PRUSS_BASE              0x4a300000
+#define PRUSS_SIZE              0x80000
+#define PADS_BASE               0x44e10800
+#define PADS_NUM                142             /* conf_* at 0x800..0xa34 */
+#define PADS_SIZE               (4 * PADS_NUM)
+#define GPIO_SIZE               0x1000
+
+static const hwaddr gpio_base[PRUSIM_GPIO_BANKS] = {
+    0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000,
+};
+
+/* Unmodelled rest of the L4 interconnects, at a lower priority */
+static const struct {
+    hwaddr base;
+    hwaddr size;
+    const char *name;
+} catch_regions[] = {
+    { 0x44c00000, 0x00400000, "L4_WKUP" },
+    { 0x48000000, 0x01000000, "L4_PER" },
+    { 0x4a000000, 0x01000000, "L4_FAST" },
+};
+#define NUM_CATCH               ARRAY_SIZE(catch_regions)
+
+/* prukit's test port: registers, and a buffer both sides read and write */
+#define PORT_BASE               0x5f000000
+#define PORT_SIZE               0x1000
+#define PORT_BUF_BASE           0x5f800000
+#define PORT_BUF_SIZE           (8 << 20)
+#define PORT_ID                 0x4d535250      /* "PRSM" */
+#define PORT_VERSION            1
+
+/* Port registers */
+#define PORT_REG_ID             0x00
+#define PORT_REG_VERSION        0x04
+#define PORT_REG_CMD            0x08
+#define PORT_REG_STATUS         0x0c
+#define PORT_REG_LEN            0x10
+#define PORT_REG_BUFSIZE        0x14
+#define PORT_REG_HANDLE         0x18
+
+/* Port commands: CMD = op | file << 8 | handle << 16 */
+#define PORT_OP_LIST            1       /* -> "name mode kind" lines */
+#define PORT_OP_READ            2       /* file -> its content */
+#define PORT_OP_WRITE           3       /* file, LEN bytes -> (error text) */
+#define PORT_OP_OPEN            4       /* file (staged) -> HANDLE */
+#define PORT_OP_APPEND          5       /* handle, LEN bytes -> (error text) */
+#define PORT_OP_CLOSE           6       /* handle: install what was written */
+#define PORT_OP_DROP            7       /* handle: forget what was written */
+
+#define PORT_HANDLES            16
+#define STIM_MAX                (64 << 20)
+
+/* GPIO bank registers (SPRUH73 chapter 25) */
+#define GPIO_REVISION           0x000
+#define GPIO_SYSCONFIG          0x010
+#define GPIO_EOI                0x020
+#define GPIO_IRQSTATUS_RAW(n)   (0x024 + 4 * (n))
+#define GPIO_IRQSTATUS(n)       (0x02c + 4 * (n))
+#define GPIO_IRQSTATUS_SET(n)   (0x034 + 4 * (n))
+#define GPIO_IRQSTATUS_CLR(n)   (0x03c + 4 * (n))
+#define GPIO_IRQWAKEN(n)        (0x044 + 4 * (n))
+#define GPIO_SYSSTATUS          0x114
+#define GPIO_CTRL               0x130
+#define GPIO_LEVELDETECT(n)     (0x140 + 4 * (n))
+#define GPIO_RISINGDETECT       0x148
+#define GPIO_FALLINGDETECT      0x14c
+#define GPIO_DEBOUNCENABLE      0x150
+#define GPIO_DEBOUNCINGTIME     0x154
+#define GPIO_REVISION_VALUE     0x50600801
+#define GPIO_NUM_STORED         (0x160 / 4)
+
+/* PRU-ICSS offsets the device itself looks at */
+#define ICSS_INTC               0x20000
+#define ICSS_INTC_SICR          (ICSS_INTC + 0x024)
+#define ICSS_INTC_EISR          (ICSS_INTC + 0x028)
+#define ICSS_INTC_EICR          (ICSS_INTC + 0x02c)
+#define ICSS_INTC_ESR(n)        (ICSS_INTC + 0x300 + 4 * (n))
+#define ICSS_INTC_ECR(n)        (ICSS_INTC + 0x380 + 4 * (n))
+#define ICSS_INTC_SRSR(n)       (ICSS_INTC + 0x200 + 4 * (n))
+#define ICSS_INTC_CMR(n)        (ICSS_INTC + 0x400 + 4 * (n))
+#define ICSS_INTC_HMR(n)        (ICSS_INTC + 0x800 + 4 * (n))
+#define ICSS_INTC_HIPIR(n)      (ICSS_INTC + 0x900 + 4 * (n))
+#define ICSS_INTC_HIER          (ICSS_INTC + 0x1500)
+#define ICSS_CTRL(core)         (0x22000 + 0x2000 * (core))
+#define ICSS_CTRL_EN            (1u << 1)
+#define ICSS_IEP_COUNT          0x2e00c
+
+#define FIRST_ARM_HOST          2       /* host interrupts 2..9 go to the ARM */
+#define TRACE_LEN               (1u << 18)
+#define PAD_RESET               0x27    /* mode 7, pull-down, receiver on */
+#define PAD_MASK                0x7f
+#define KNOB_MAX_US             1000000
+#define UNIMP_LAST_LEN          160
+
+typedef struct PrussInput {
+    struct prusim_stim stim;
+    uint64_t origin;
+    bool pending_origin;
+    uint32_t origin_iep;
+} PrussInput;
+
+typedef struct PrussStage {
+    bool used;
+    unsigned int port;
+    char *text;
+    size_t len;
+    size_t cap;
+    size_t checked;
+} PrussStage;
+
+struct AM335xPrussState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion pruss_mr;
+    MemoryRegion gpio_mr[PRUSIM_GPIO_BANKS];
+    MemoryRegion pads_mr;
+    MemoryRegion port_mr;
+    MemoryRegion port_buf;
+    MemoryRegion catch_mr[NUM_CATCH];
+    qemu_irq host_irq[AM335X_PRUSS_NUM_HOST_IRQS];
+    qemu_irq gpio_irq[AM335X_PRUSS_NUM_GPIO_IRQS];
+    uint8_t *buf;                   /* port_buf's memory */
+
+    /* properties */
+    uint32_t slice_cycles;
+    uint32_t hold_cap_ms;
+
+    /* Under the BQL */
+    bool host_level[AM335X_PRUSS_NUM_HOST_IRQS];
+    uint32_t port_status;
+    uint32_t port_len;
+    uint32_t port_handle;
+
+    QemuThread thread;
+    QemuMutex lock;                 /* everything below; after the BQL */
+    QemuCond wake;                  /* the thread waits for work here */
+    QemuCond turn;                  /* ... and here for MMIO handlers */
+    int waiters;                    /* MMIO handlers waiting for the lock */
+    bool quit;
+    bool runnable;                  /* the last slice did not end idle */
+    bool irq_dirty;                 /* a host interrupt line may have changed */
+    bool ocp_pause;
+
+    struct prusim *s;
+    bool stopped_reported[PRUSIM_NUM_CORES];
+    char ocp_err[PRUSIM_REASON_LEN];
+    uint64_t ocp_errors;
+
+    /* pin trace */
+    struct prusim_trace_rec *trace;
+    uint32_t trace_head;
+    uint32_t trace_count;
+    uint64_t trace_dropped;
+    uint64_t trace_origin;
+    uint64_t trace_until;
+
+    /* pads */
+    uint32_t pad[PADS_NUM];
+    uint64_t r30;                   /* every PRU output's level */
+    uint64_t r30_shown;             /* what its pads show */
+    uint64_t unmuxed_writes;
+    uint64_t unmuxed_seen;          /* outputs written while unmuxed */
+    uint64_t pad_writes;
+
+    /* GPIO registers the simulator does not keep */
+    uint32_t gpio_reg[PRUSIM_GPIO_BANKS][GPIO_NUM_STORED];
+
+    PrussInput input[PRUSIM_NUM_PORTS];
+    PrussStage stage[PORT_HANDLES];
+
+    /* interrupt hold (emulation policy, see above) */
+    uint64_t taken;         /* events the ARM read from HIPIR */
+    uint64_t in_service;    /* ... and masked (EICR) or acked masked (SICR) */
+    uint32_t expired_lines; /* held past the cap: ignored until they clear */
+    uint64_t expired_events;
+    int64_t hold_since;     /* host ns, 0 while not holding */
+    uint64_t holds;
+    uint64_t hold_ns;
+    uint64_t hold_max_ns;
+    uint64_t hold_expired;
+    uint64_t strobe[PRUSIM_NUM_HOSTS]; /* R31 strobe that raised a host line */
+    uint16_t event_latency; /* strobe to INTC, in cycles (the config's) */
+
+    /* statistics */
+    uint64_t host_ns;
+    uint64_t lat_last;
+    uint64_t lat_max;
+    uint64_t lat_sum;
+    uint64_t lat_count;
+    uint64_t unimp;
+    char unimp_last[UNIMP_LAST_LEN];
+
+    /* knobs (microseconds; freeze: 0 or 1) */
+    uint32_t ocp_write_pause_us;
+    uint32_t stop_delay_us;
+    uint32_t freeze;
+};
+
+static int64_t now_ns(void)
+{
+    return get_clock();
+}
+
+/* ------------------------------------------------------------------ */
+/* Unmodelled accesses                                                 */
+
+static void G_GNUC_PRINTF(2, 3) pruss_unimp(AM335xPrussState *p,
+                                            const char *fmt, ...)
+{
+    va_list ap;
+
+    va_start(ap, fmt);
+    vsnprintf(p->unimp_last, sizeof(p->unimp_last), fmt, ap);
+    va_end(ap);
+    p->unimp++;
+    qemu_log_mask(LOG_UNIMP, "am335x-pruss: %s\n", p->unimp_last);
+}
+
+/* ------------------------------------------------------------------ */
+/* Pin trace and pads                                                  */
+
+static void trace_pin(AM335xPrussState *p, uint64_t cycle, unsigned int pin,
+                      bool level)
+{
+    struct prusim_trace_rec *r = &p->trace[p->trace_head];
+
+    if (p->trace_until && cycle >= p->trace_until) {
+        return;
+    }
+    memset(r, 0, sizeof(*r));
+    r->cycle = cycle;
+    r->pin = pin;
+    r->level = level;
+    p->trace_head = (p->trace_head + 1) % TRACE_LEN;
+    if (p->trace_count < TRACE_LEN) {
+        p->trace_count++;
+    } else {
+        p->trace_dropped++;
+    }
+}
+
+/* Is PRU output @pin (PRUSIM_PIN_R30()) on a pad muxed to it? */
+static bool r30_muxed(AM335xPrussState *p, unsigned int pin)
+{
+    unsigned int i;
+
+    for (i = 0; i < ARRAY_SIZE(am335x_r30_pads); i++) {
+        const struct am335x_pin_row *row = &am335x_r30_pads[i];
+
+        if (PRUSIM_PIN_R30(row->core, row->bit) == pin &&
+            (p->pad[(row->offset - 0x800) / 4] & 7) == row->mode) {
+            return true;
+        }
+    }
+    return false;
+}
+
+static void r30_show(AM335xPrussState *p, uint64_t cycle, unsigned int pin)
+{
+    uint64_t bit = 1ull << pin;
+    bool level = (p->r30 & bit) && r30_muxed(p, pin);
+
+    if (!!(p->r30_shown & bit) == level) {
+        return;
+    }
+    p->r30_shown ^= bit;
+    trace_pin(p, cycle, pin, level);
+}
+
+static void pads_changed(AM335xPrussState *p)
+{
+    unsigned int pin;
+
+    for (pin = 0; pin < 64; pin++) {
+        r30_show(p, p->s->now, pin);
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Input stimulus                                                      */
+
+static uint32_t iep_count(AM335xPrussState *p)
+{
+    uint32_t v = 0;
+
+    prusim_host_read(p->s, ICSS_IEP_COUNT, &v, sizeof(v));
+    return v;
+}
+
+/* A core started: the origin of traces and of stimuli waiting for it. */
+static void core_started(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    p->trace_origin = p->s->now;
+    for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
+        PrussInput *in = &p->input[i];
+
+        if (in->pending_origin) {
+            in->origin = p->s->now;
+            in->origin_iep = iep_count(p);
+            in->pending_origin = false;
+        }
+    }
+}
+
+static bool inputs_pending(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
+        PrussInput *in = &p->input[i];
+        uint64_t next;
+
+        if (!in->stim.count || in->pending_origin) {
+            continue;
+        }
+        if (p->s->now < in->origin) {
+            return true;
+        }
+        prusim_stim_value(&in->stim, p->s->now - in->origin, &next);
+        if (next != PRUSIM_NEVER) {
+            return true;
+        }
+    }
+    return false;
+}
+
+static void stim_free(struct prusim_stim *st)
+{
+    g_free(st->cycle);
+    g_free(st->value);
+    memset(st, 0, sizeof(*st));
+}
+
+/* ------------------------------------------------------------------ */
+/* prusim callbacks (under the device lock)                            */
+
+static void cb_pin(void *ctx, u64 cycle, unsigned int pin, bool level)
+{
+    AM335xPrussState *p = ctx;
+    uint64_t bit;
+
+    if (pin >= PRUSIM_PIN_GPIO(0, 0)) {
+        trace_pin(p, cycle, pin, level);        /* GPIO: whatever the pad */
+        return;
+    }
+    bit = 1ull << pin;
+    if (level) {
+        p->r30 |= bit;
+    } else {
+        p->r30 &= ~bit;
+    }
+    if (!r30_muxed(p, pin)) {
+        p->unmuxed_writes++;
+        p->unmuxed_seen |= bit;
+    }
+    r30_show(p, cycle, pin);
+}
+
+static u32 cb_input(void *ctx, unsigned int port, u64 cycle, u64 *next_change)
+{
+    AM335xPrussState *p = ctx;
+    PrussInput *in = &p->input[port];
+    uint64_t next;
+    uint32_t v;
+
+    if (!in->stim.count || in->pending_origin || cycle < in->origin) {
+        *next_change = in->stim.count && !in->pending_origin ?
+                       in->origin : PRUSIM_NEVER;
+        return 0;
+    }
+    v = prusim_stim_value(&in->stim, cycle - in->origin, &next);
+    *next_change = next == PRUSIM_NEVER ? PRUSIM_NEVER : next + in->origin;
+    return v;
+}
+
+static void cb_host_irq(void *ctx, u64 cycle, unsigned int host, bool level)
+{
+    AM335xPrussState *p = ctx;
+
+    if (host < FIRST_ARM_HOST) {
+        return;
+    }
+    if (level) {
+        p->strobe[host] = cycle - MIN(cycle, (u64)p->event_latency);
+    }
+    p->irq_dirty = true;
+    /* the slice ends here: the line is delivered before time goes on */
+    prusim_yield(p->s);
+}
+
+/* Is [@addr, @addr + @len) guest RAM? */
+static bool ocp_is_ram(uint32_t addr, unsigned int len, bool write)
+{
+    MemoryRegion *mr;
+    hwaddr xlat, l = len;
+
+    RCU_READ_LOCK_GUARD();
+    mr = address_space_translate(&address_space_memory, addr, &xlat, &l, write,
+                                 MEMTXATTRS_UNSPECIFIED);
+    return memory_region_is_ram(mr) && !memory_region_is_romd(mr) && l >= len;
+}
+
+/*
+ * OCP master port: the AM335x EMIF window 0x80000000..0xbfffffff, where the
+ * guest's RAM is (as an AM335x's DDR is).  Only RAM: a device behind the
+ * port would need the BQL, which this lock must not wait for.
+ */
+static int cb_ocp(AM335xPrussState *p, u32 addr, void *buf, unsigned int len,
+                  bool write)
+{
+    const char *what = write ? "write" : "read";
+
+    if (addr < 0x80000000u || (uint64_t)addr + len > 0xc0000000ull) {
+        snprintf(p->ocp_err, sizeof(p->ocp_err),
+                 "OCP %s of %u bytes at 0x%08x: not modelled (only DDR)",
+                 what, len, addr);
+        goto fail;
+    }
+    if (!ocp_is_ram(addr, len, write)) {
+        snprintf(p->ocp_err, sizeof(p->ocp_err),
+                 "OCP %s of %u bytes at 0x%08x: no RAM there",
+                 what, len, addr);
+        goto fail;
+    }
+    if (address_space_rw(&address_space_memory, addr, MEMTXATTRS_UNSPECIFIED,
+                         buf, len, write) != MEMTX_OK) {
+        snprintf(p->ocp_err, sizeof(p->ocp_err),
+                 "OCP %s at 0x%08x failed", what, addr);
+        goto fail;
+    }
+    if (write && p->ocp_write_pause_us) {
+        /* knob: let the ARM run before the next store */
+        p->ocp_pause = true;
+        prusim_yield(p->s);
+    }
+    return 0;
+fail:
+    p->ocp_errors++;
+    qemu_log_mask(LOG_GUEST_ERROR, "am335x-pruss: %s\n", p->ocp_err);
+    return -EFAULT;
+}
+
+static int cb_ocp_read(void *ctx, u32 addr, void *buf, unsigned int len)
+{
+    return cb_ocp(ctx, addr, buf, len, false);
+}
+
+static int cb_ocp_write(void *ctx, u32 addr, const void *buf, unsigned int len)
+{
+    return cb_ocp(ctx, addr, (void *)buf, len, true);
+}
+
+static const struct prusim_ops pruss_sim_ops = {
+    .pin = cb_pin,
+    .input = cb_input,
+    .host_irq = cb_host_irq,
+    .ocp_read = cb_ocp_read,
+    .ocp_write = cb_ocp_write,
+};
+
+/* ------------------------------------------------------------------ */
+/* Interrupt lines and the hold                                        */
+
+static uint32_t icss_read32(AM335xPrussState *p, uint32_t off)
+{
+    uint32_t v = 0;
+
+    prusim_host_read(p->s, off, &v, sizeof(v));
+    return v;
+}
+
+/* Events routed to a host interrupt towards the ARM that is enabled */
+static uint64_t arm_routed(AM335xPrussState *p)
+{
+    uint32_t hier = icss_read32(p, ICSS_INTC_HIER);
+    uint8_t cmr[PRUSIM_NUM_EVENTS], hmr[12];
+    uint64_t mask = 0;
+    unsigned int ev;
+
+    prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
+    prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
+    for (ev = 0; ev < PRUSIM_NUM_EVENTS; ev++) {
+        unsigned int ch = cmr[ev] & 0xf, host;
+
+        if (ch >= PRUSIM_NUM_CHANNELS) {
+            continue;
+        }
+        host = hmr[ch] & 0xf;
+        if (host >= FIRST_ARM_HOST && host < PRUSIM_NUM_HOSTS &&
+            (hier >> host) & 1) {
+            mask |= 1ull << ev;
+        }
+    }
+    return mask;
+}
+
+static uint32_t arm_lines(AM335xPrussState *p)
+{
+    uint32_t lines = 0;
+    unsigned int host;
+
+    for (host = FIRST_ARM_HOST; host < PRUSIM_NUM_HOSTS; host++) {
+        if (prusim_host_pending(p->s, host)) {
+            lines |= 1u << host;
+        }
+    }
+    return lines;
+}
+
+/*
+ * Whether simulated time must stand still now (see the top of the file),
+ * with the accounting of holds and of the cap.  Sets *@wait_ms to how long
+ * the cap still allows.
+ */
+static bool pruss_held(AM335xPrussState *p, int *wait_ms)
+{
+    uint32_t lines = arm_lines(p);
+    uint64_t events = p->in_service ? p->in_service & arm_routed(p) : 0;
+    int64_t now = now_ns(), held;
+
+    p->expired_lines &= lines;
+    p->expired_events &= events;
+    lines &= ~p->expired_lines;
+    events &= ~p->expired_events;
+    if (!lines && !events) {
+        if (p->hold_since) {
+            held = now - p->hold_since;
+            p->hold_ns += held;
+            p->hold_max_ns = MAX(p->hold_max_ns, (uint64_t)held);
+            p->hold_since = 0;
+        }
+        return false;
+    }
+    if (!p->hold_since) {
+        p->hold_since = now;
+        p->holds++;
+    }
+    held = now - p->hold_since;
+    if (held >= (int64_t)p->hold_cap_ms * SCALE_MS) {
+        p->expired_lines |= lines;
+        p->expired_events |= events;
+        p->hold_expired++;
+        p->hold_ns += held;
+        p->hold_max_ns = MAX(p->hold_max_ns, (uint64_t)held);
+        p->hold_since = 0;
+        return false;
+    }
+    *wait_ms = MAX(1, (int)(((int64_t)p->hold_cap_ms * SCALE_MS - held) /
+                            SCALE_MS));
+    return true;
+}
+
+/* Drive the host interrupt lines as the INTC says.  BQL and lock held. */
+static void pruss_update_irqs(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    p->irq_dirty = false;
+    for (i = 0; i < AM335X_PRUSS_NUM_HOST_IRQS; i++) {
+        bool level = prusim_host_pending(p->s, FIRST_ARM_HOST + i);
+
+        if (level != p->host_level[i]) {
+            p->host_level[i] = level;
+            trace_am335x_pruss_irq(i, level);
+            qemu_set_irq(p->host_irq[i], level);
+        }
+    }
+}
+
+/*
+ * The ARM takes, masks, acknowledges and unmasks events through the INTC:
+ * follow what it does to the events of its host interrupts (the hold), and
+ * time the deliveries.  pruss-intc's chained handler reads HIPIR, then
+ * handle_level_irq() masks the event (EICR) and acknowledges it (SICR), runs
+ * the handler (or wakes its thread) and unmasks it (EISR): from the mask to
+ * the unmask the ARM is servicing the event.  Called before the write @off
+ * = @val is made.
+ */
+static void intc_write_seen(AM335xPrussState *p, uint32_t off, uint32_t val)
+{
+    unsigned int ev = val & 0x3ff, host;
+    uint64_t bit = ev < PRUSIM_NUM_EVENTS ? 1ull << ev : 0;
+    uint8_t cmr[PRUSIM_NUM_EVENTS], hmr[12];
+
+    switch (off) {
+    case ICSS_INTC_EICR:
+        if (p->taken & bit) {
+            p->in_service |= bit;
+        }
+        break;
+    case ICSS_INTC_SICR:
+        if (!(p->taken & bit)) {
+            break;
+        }
+        p->taken &= ~bit;
+        if (!((icss_read32(p, ICSS_INTC_ESR(ev / 32)) >> (ev % 32)) & 1)) {
+            p->in_service |= bit;
+        }
+        if (!((icss_read32(p, ICSS_INTC_SRSR(ev / 32)) >> (ev % 32)) & 1)) {
+            break;
+        }
+        /* the delivery's latency, from the R31 strobe to this ack */
+        prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
+        prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
+        host = hmr[cmr[ev] & 0xf] & 0xf;
+        if (host < PRUSIM_NUM_HOSTS && p->strobe[host] &&
+            p->s->now >= p->strobe[host]) {
+            p->lat_last = p->s->now - p->strobe[host];
+            p->lat_max = MAX(p->lat_max, p->lat_last);
+            p->lat_sum += p->lat_last;
+            p->lat_count++;
+        }
+        break;
+    case ICSS_INTC_EISR:
+        p->in_service &= ~bit;
+        break;
+    case ICSS_INTC_ESR(0):
+    case ICSS_INTC_ECR(0):
+        p->in_service &= ~(uint64_t)val;
+        p->taken &= ~(uint64_t)val;
+        break;
+    case ICSS_INTC_ESR(1):
+    case ICSS_INTC_ECR(1):
+        p->in_service &= ~((uint64_t)val << 32);
+        p->taken &= ~((uint64_t)val << 32);
+        break;
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Taking the lock from an MMIO handler (BQL held)                      */
+
+static void pruss_lock(AM335xPrussState *p)
+{
+    qatomic_inc(&p->waiters);
+    qemu_mutex_lock(&p->lock);
+    qatomic_dec(&p->waiters);
+}
+
+static void pruss_unlock(AM335xPrussState *p, bool kick)
+{
+    if (kick) {
+        qemu_cond_signal(&p->wake);
+    }
+    qemu_cond_signal(&p->turn);
+    qemu_mutex_unlock(&p->lock);
+}
+
+/* ------------------------------------------------------------------ */
+/* PRU-ICSS                                                            */
+
+static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = 0;
+
+    pruss_lock(p);
+    if (!prusim_host_modelled(addr, size, false)) {
+        pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx,
+                    size, addr);
+    }
+    prusim_host_read(p->s, addr, &v, size);
+    /* the ARM's interrupt handler takes the event HIPIR names */
+    if (addr >= ICSS_INTC_HIPIR(FIRST_ARM_HOST) &&
+        addr < ICSS_INTC_HIPIR(PRUSIM_NUM_HOSTS) &&
+        size == 4 && v < PRUSIM_NUM_EVENTS) {
+        p->taken |= 1ull << v;
+    }
+    pruss_unlock(p, false);
+    trace_am335x_pruss_read(addr, size, v);
+    return v;
+}
+
+static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
+                        unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = val;
+    bool was_running[PRUSIM_NUM_CORES];
+    unsigned int i;
+
+    trace_am335x_pruss_write(addr, size, v);
+    pruss_lock(p);
+    if (!prusim_host_modelled(addr, size, true)) {
+        pruss_unimp(p,
+                    "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx " (0x%x)",
+                    size, addr, v);
+    }
+    for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+        struct prusim_status st;
+
+        prusim_get_status(p->s, i, &st);
+        was_running[i] = st.state == PRUSIM_RUNNING ||
+                         st.state == PRUSIM_SLEEPING;
+        /*
+         * Knob stop_delay_us: a store that disables a running core
+         * reaches it that much later, as if the stopping task had been
+         * preempted right before it; the core runs on meanwhile.
+         */
+        if (addr == ICSS_CTRL(i) && size == 4 && was_running[i] &&
+            !(v & ICSS_CTRL_EN) && p->stop_delay_us) {
+            uint32_t us = p->stop_delay_us;
+
+            qemu_cond_signal(&p->turn);
+            qemu_mutex_unlock(&p->lock);
+            g_usleep(us);
+            pruss_lock(p);
+        }
+    }
+    if (addr >= ICSS_INTC && addr < ICSS_INTC + 0x2000 && size == 4) {
+        intc_write_seen(p, addr, v);
+    }
+    prusim_host_write(p->s, addr, &v, size);
+    for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+        struct prusim_status st;
+
+        prusim_get_status(p->s, i, &st);
+        if (!was_running[i] && st.state == PRUSIM_RUNNING) {
+            core_started(p);
+            p->stopped_reported[i] = false;
+        }
+    }
+    p->runnable = true;
+    pruss_update_irqs(p);
+    pruss_unlock(p, true);
+}
+
+static const MemoryRegionOps pruss_ops = {
+    .read = pruss_read,
+    .write = pruss_write,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 1, .max_access_size = 4 },
+    .impl = { .min_access_size = 1, .max_access_size = 4 },
+};
+
+/* ------------------------------------------------------------------ */
+/* GPIO banks                                                          */
+
+static bool gpio_sim_reg(hwaddr off)
+{
+    return off == PRUSIM_GPIO_OE || off == PRUSIM_GPIO_DATAIN ||
+           off == PRUSIM_GPIO_DATAOUT || off == PRUSIM_GPIO_CLEARDATAOUT ||
+           off == PRUSIM_GPIO_SETDATAOUT;
+}
+
+static bool gpio_stored_reg(hwaddr off)
+{
+    switch (off) {
+    case GPIO_SYSCONFIG:
+    case GPIO_IRQSTATUS_RAW(0):
+    case GPIO_IRQSTATUS_RAW(1):
+    case GPIO_IRQSTATUS(0):
+    case GPIO_IRQSTATUS(1):
+    case GPIO_IRQSTATUS_SET(0):
+    case GPIO_IRQSTATUS_SET(1):
+    case GPIO_IRQSTATUS_CLR(0):
+    case GPIO_IRQSTATUS_CLR(1):
+    case GPIO_IRQWAKEN(0):
+    case GPIO_IRQWAKEN(1):
+    case GPIO_CTRL:
+    case GPIO_LEVELDETECT(0):
+    case GPIO_LEVELDETECT(1):
+    case GPIO_RISINGDETECT:
+    case GPIO_FALLINGDETECT:
+    case GPIO_DEBOUNCENABLE:
+    case GPIO_DEBOUNCINGTIME:
+        return true;
+    }
+    return false;
+}
+
+static uint64_t gpio_read(void *opaque, hwaddr off, unsigned int size,
+                          unsigned int bank)
+{
+    AM335xPrussState *p = opaque;
+    unsigned int shift;
+    uint32_t v = 0;
+
+    /*
+     * a narrower read (gpio-omap reads REVISION as 16 bits) takes part of the
+     * word
+     */
+    if ((off & 3) + size > 4) {
+        pruss_lock(p);
+        pruss_unimp(p, "GPIO%u read of %u bytes at 0x%03" HWADDR_PRIx,
+                    bank, size, off);
+        pruss_unlock(p, false);
+        return 0;
+    }
+    shift = 8 * (off & 3);
+    off &= ~(hwaddr)3;
+    pruss_lock(p);
+    if (gpio_sim_reg(off)) {
+        v = prusim_gpio_read(p->s, bank,
+                             off == PRUSIM_GPIO_OE ||
+                             off == PRUSIM_GPIO_DATAIN ?
+                             off : PRUSIM_GPIO_DATAOUT);
+    } else if (off == GPIO_REVISION) {
+        v = GPIO_REVISION_VALUE;
+    } else if (off == GPIO_SYSSTATUS) {
+        v = 1;          /* RESETDONE */
+    } else if (off == GPIO_IRQSTATUS_CLR(0) || off == GPIO_IRQSTATUS_CLR(1)) {
+        v = p->gpio_reg[bank][(off - GPIO_IRQSTATUS_CLR(0) +
+                               GPIO_IRQSTATUS_SET(0)) / 4];
+    } else if (gpio_stored_reg(off)) {
+        v = p->gpio_reg[bank][off / 4];
+    } else {
+        pruss_unimp(p, "GPIO%u read at 0x%03" HWADDR_PRIx, bank, off);
+    }
+    pruss_unlock(p, false);
+    trace_am335x_pruss_gpio_read(bank, off, v);
+    return extract32(v, shift, 8 * size);
+}
+
+static void gpio_write(void *opaque, hwaddr off, uint64_t val,
+                       unsigned int size, unsigned int bank)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = val, *reg;
+
+    trace_am335x_pruss_gpio_write(bank, off, v);
+    pruss_lock(p);
+    if (size != 4 || off & 3) {
+        pruss_unimp(p, "GPIO%u write of %u bytes at 0x%03" HWADDR_PRIx,
+                    bank, size, off);
+    } else if (gpio_sim_reg(off) && off != PRUSIM_GPIO_DATAIN) {
+        prusim_gpio_write(p->s, bank, off, v);
+    } else if (gpio_stored_reg(off)) {
+        reg = &p->gpio_reg[bank][off / 4];
+        switch (off) {
+        case GPIO_IRQSTATUS(0):
+        case GPIO_IRQSTATUS(1):
+            *reg &= ~v;             /* write 1 to clear; never set */
+            break;
+        case GPIO_IRQSTATUS_SET(0):
+        case GPIO_IRQSTATUS_SET(1):
+            if (v) {
+                pruss_unimp(p, "GPIO%u interrupts (IRQSTATUS_SET 0x%08x)",
+                            bank, v);
+            }
+            *reg |= v;
+            break;
+        case GPIO_IRQSTATUS_CLR(0):
+        case GPIO_IRQSTATUS_CLR(1):
+            p->gpio_reg[bank][(off - GPIO_IRQSTATUS_CLR(0) +
+                               GPIO_IRQSTATUS_SET(0)) / 4] &= ~v;
+            break;
+        case GPIO_IRQSTATUS_RAW(0):
+        case GPIO_IRQSTATUS_RAW(1):
+            if (v) {
+                pruss_unimp(p, "GPIO%u IRQSTATUS_RAW set 0x%08x", bank, v);
+            }
+            break;
+        default:
+            *reg = v;
+            break;
+        }
+    } else if (off != GPIO_EOI) {
+        pruss_unimp(p, "GPIO%u write at 0x%03" HWADDR_PRIx " (0x%x)",
+                    bank, off, v);
+    }
+    p->runnable = true;
+    pruss_unlock(p, true);
+}
+
+#define GPIO_OPS(n)                                                     \
+static uint64_t gpio##n##_read(void *opaque, hwaddr off, unsigned int size) \
+{                                                                       \
+    return gpio_read(opaque, off, size, n);                             \
+}                                                                       \
+static void gpio##n##_write(void *opaque, hwaddr off, uint64_t v,       \
+                            unsigned int size)                          \
+{                                                                       \
+    gpio_write(opaque, off, v, size, n);                                \
+}
+GPIO_OPS(0)
+GPIO_OPS(1)
+GPIO_OPS(2)
+GPIO_OPS(3)
+
+static const MemoryRegionOps gpio_ops[PRUSIM_GPIO_BANKS] = {
+#define GPIO_OPS_ENTRY(n)                                               \
+    [n] = {                                                             \
+        .read = gpio##n##_read,                                         \
+        .write = gpio##n##_write,                                       \
+        .endianness = DEVICE_LITTLE_ENDIAN,                             \
+        .valid = { .min_access_size = 1, .max_access_size = 4 },        \
+        .impl = { .min_access_size = 1, .max_access_size = 4 },         \
+    }
+    GPIO_OPS_ENTRY(0), GPIO_OPS_ENTRY(1), GPIO_OPS_ENTRY(2), GPIO_OPS_ENTRY(3),
+};
+
+/* ------------------------------------------------------------------ */
+/* Pad registers                                                       */
+
+static uint64_t pads_read(void *opaque, hwaddr off, unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = 0;
+
+    pruss_lock(p);
+    if (size != 4 || off & 3) {
+        pruss_unimp(p, "pad read of %u bytes at 0x%03" HWADDR_PRIx,
+                    size, 0x800 + off);
+    } else {
+        v = p->pad[off / 4];
+    }
+    pruss_unlock(p, false);
+    return v;
+}
+
+static void pads_write(void *opaque, hwaddr off, uint64_t val,
+                       unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+
+    trace_am335x_pruss_pad_write(0x800 + off, val);
+    pruss_lock(p);
+    if (size != 4 || off & 3) {
+        pruss_unimp(p, "pad write of %u bytes at 0x%03" HWADDR_PRIx,
+                    size, 0x800 + off);
+    } else {
+        p->pad[off / 4] = val & PAD_MASK;
+        p->pad_writes++;
+        pads_changed(p);
+    }
+    pruss_unlock(p, false);
+}
+
+static const MemoryRegionOps pads_ops = {
+    .read = pads_read,
+    .write = pads_write,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 1, .max_access_size = 4 },
+    .impl = { .min_access_size = 1, .max_access_size = 4 },
+};
+
+/* ------------------------------------------------------------------ */
+/* The rest of the L4 interconnects: not modelled                      */
+
+static uint64_t catch_read(void *opaque, hwaddr off, unsigned int size)
+{
+    MemoryRegion *mr = opaque;
+    AM335xPrussState *p = AM335X_PRUSS(mr->owner);
+
+    pruss_lock(p);
+    pruss_unimp(p, "read of %u bytes at 0x%08" HWADDR_PRIx " (not modelled)",
+                size, mr->addr + off);
+    pruss_unlock(p, false);
+    return 0;
+}
+
+static void catch_write(void *opaque, hwaddr off, uint64_t val,
+                        unsigned int size)
+{
+    MemoryRegion *mr = opaque;
+    AM335xPrussState *p = AM335X_PRUSS(mr->owner);
+
+    pruss_lock(p);
+    pruss_unimp(p, "write of %u bytes at 0x%08" HWADDR_PRIx
+                " (0x%" PRIx64 ", not modelled)",
+                size, mr->addr + off, val);
+    pruss_unlock(p, false);
+}
+
+static const MemoryRegionOps catch_ops = {
+    .read = catch_read,
+    .write = catch_write,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 1, .max_access_size = 8 },
+};
+
+/* ------------------------------------------------------------------ */
+/* Test port: files                                                    */
+
+enum port_file {
+    PF_TRACE,
+    PF_STATS,
+    PF_PADS,
+    PF_OCP_WRITE_PAUSE_US,
+    PF_STOP_DELAY_US,
+    PF_FREEZE,
+    PF_INPUT,               /* PF_INPUT + port: input/<name> */
+    PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
+};
+
+static const char *const port_file_name[PF_NUM] = {
+    [PF_TRACE] = "trace",
+    [PF_STATS] = "stats",
+    [PF_PADS] = "pads",
+    [PF_OCP_WRITE_PAUSE_US] = "ocp_write_pause_us",
+    [PF_STOP_DELAY_US] = "stop_delay_us",
+    [PF_FREEZE] = "freeze",
+    [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
+    [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
+    [PF_INPUT + PRUSIM_PORT_GPIO(0)] = "input/gpio0",
+    [PF_INPUT + PRUSIM_PORT_GPIO(1)] = "input/gpio1",
+    [PF_INPUT + PRUSIM_PORT_GPIO(2)] = "input/gpio2",
+    [PF_INPUT + PRUSIM_PORT_GPIO(3)] = "input/gpio3",
+};
+
+/* Reply text; returns its length (truncated to the buffer) */
+static uint32_t G_GNUC_PRINTF(2, 3) port_reply(AM335xPrussState *p,
+                                               const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+
+    va_start(ap, fmt);
+    n = vsnprintf((char *)p->buf, PORT_BUF_SIZE, fmt, ap);
+    va_end(ap);
+    return MIN((uint32_t)MAX(n, 0), PORT_BUF_SIZE - 1);
+}
+
+/* Appends to the reply being built at *@len */
+static void G_GNUC_PRINTF(3, 4) port_add(AM335xPrussState *p, uint32_t *len,
+                                         const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+
+    if (*len >= PORT_BUF_SIZE - 1) {
+        return;
+    }
+    va_start(ap, fmt);
+    n = vsnprintf((char *)p->buf + *len, PORT_BUF_SIZE - *len, fmt, ap);
+    va_end(ap);
+    *len = MIN(*len + MAX(n, 0), PORT_BUF_SIZE - 1);
+}
+
+static uint32_t port_trace(AM335xPrussState *p)
+{
+    struct prusim_trace_hdr hdr;
+    uint32_t first, n;
+    uint8_t *rec = p->buf + sizeof(hdr);
+
+    memset(&hdr, 0, sizeof(hdr));
+    memcpy(hdr.magic, PRUSIM_TRACE_MAGIC, sizeof(hdr.magic));
+    hdr.version = PRUSIM_TRACE_VERSION;
+    hdr.rec_size = sizeof(struct prusim_trace_rec);
+    hdr.origin = p->trace_origin;
+    hdr.count = p->trace_count;
+    hdr.dropped = p->trace_dropped;
+    hdr.end = p->trace_until ? MIN(p->s->now, p->trace_until) : p->s->now;
+    memcpy(p->buf, &hdr, sizeof(hdr));
+    first = (p->trace_head + TRACE_LEN - p->trace_count) % TRACE_LEN;
+    n = MIN(p->trace_count, TRACE_LEN - first);
+    memcpy(rec, &p->trace[first], n * sizeof(*p->trace));
+    memcpy(rec + n * sizeof(*p->trace), p->trace,
+           (p->trace_count - n) * sizeof(*p->trace));
+    return sizeof(hdr) + p->trace_count * sizeof(*p->trace);
+}
+
+static const char *const state_name[] = {
+    [PRUSIM_DISABLED] = "disabled",
+    [PRUSIM_RUNNING] = "running",
+    [PRUSIM_SLEEPING] = "sleeping",
+    [PRUSIM_HALTED] = "halted",
+    [PRUSIM_STOPPED] = "stopped",
+};
+
+static uint32_t port_stats(AM335xPrussState *p)
+{
+    uint64_t enabled = (uint64_t)icss_read32(p, ICSS_INTC_ESR(1)) << 32 |
+                       icss_read32(p, ICSS_INTC_ESR(0));
+    uint8_t cmr[PRUSIM_NUM_EVENTS], hmr[12];
+    uint32_t len = 0;
+    unsigned int i;
+    int64_t held = p->hold_since ? now_ns() - p->hold_since : 0;
+
+    prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
+    prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
+    port_add(p, &len, "cycles %" PRIu64 "\n", p->s->now);
+    port_add(p, &len, "host_ns %" PRIu64 "\n", p->host_ns);
+    for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+        struct prusim_status st;
+
+        prusim_get_status(p->s, i, &st);
+        port_add(p, &len, "pru%u state %s pc 0x%x instructions %" PRIu64
+                 " stalls %" PRIu64 " reason %s\n", i, state_name[st.state],
+                 st.pc * 4, st.insns, st.stalls,
+                 st.reason[0] ? st.reason : "-");
+    }
+    port_add(p, &len, "trace_events %u trace_dropped %" PRIu64
+             " trace_origin %" PRIu64
+             " trace_until %" PRIu64 "\n", p->trace_count, p->trace_dropped,
+             p->trace_origin, p->trace_until);
+    port_add(p, &len, "pads checked unmuxed_writes %" PRIu64 "\n",
+             p->unmuxed_writes);
+    port_add(p, &len, "unmuxed_outputs");
+    for (i = 0; i < 64; i++) {
+        if ((p->unmuxed_seen >> i) & 1) {
+            port_add(p, &len, " pru%u_r30_%u", i / 32, i % 32);
+        }
+    }
+    port_add(p, &len, "\n");
+    port_add(p, &len, "routes");
+    for (i = 0; i < PRUSIM_NUM_EVENTS; i++) {
+        unsigned int ch = cmr[i] & 0xf;
+
+        if (((enabled | p->in_service) >> i) & 1) {
+            port_add(p, &len, " %u:%u:%u", i, ch,
+                     ch < PRUSIM_NUM_CHANNELS ? hmr[ch] & 0xf : 0);
+        }
+    }
+    port_add(p, &len, "\n");
+    port_add(p, &len, "irq_latency last %" PRIu64 " max %" PRIu64
+             " mean %" PRIu64
+             " count %" PRIu64 "\n", p->lat_last, p->lat_max,
+             p->lat_count ? p->lat_sum / p->lat_count : 0, p->lat_count);
+    port_add(p, &len, "holds %" PRIu64 " held_ns %" PRIu64
+             " held_max_ns %" PRIu64
+             " hold_expired %" PRIu64 " hold_cap_ms %u\n",
+             p->holds, p->hold_ns + held,
+             MAX(p->hold_max_ns, (uint64_t)held), p->hold_expired,
+             p->hold_cap_ms);
+    port_add(p, &len, "ocp_errors %" PRIu64 "%s%s\n", p->ocp_errors,
+             p->ocp_errors ? " last " : "", p->ocp_errors ? p->ocp_err : "");
+    port_add(p, &len, "unmodelled %" PRIu64 "\n", p->unimp);
+    port_add(p, &len, "unmodelled_last %s\n", p->unimp ? p->unimp_last : "-");
+    return len;
+}
+
+/* "pads": every pad not at its reset value and every pad of a PRU output */
+static uint32_t port_pads(AM335xPrussState *p)
+{
+    uint32_t len = 0;
+    unsigned int i, r;
+
+    for (i = 0; i < PADS_NUM; i++) {
+        uint32_t off = 0x800 + 4 * i;
+        bool listed = p->pad[i] != PAD_RESET;
+
+        for (r = 0; r < ARRAY_SIZE(am335x_r30_pads); r++) {
+            listed |= am335x_r30_pads[r].offset == off;
+        }
+        if (!listed) {
+            continue;
+        }
+        port_add(p, &len, "0x%03x 0x%02x", off, p->pad[i]);
+        for (r = 0; r < ARRAY_SIZE(am335x_r30_pads); r++) {
+            const struct am335x_pin_row *row = &am335x_r30_pads[r];
+
+            if (row->offset == off) {
+                port_add(p, &len, " pru%u_r30_%u %s", row->core, row->bit,
+                         (p->pad[i] & 7) == row->mode ? "muxed" : "unmuxed");
+            }
+        }
+        port_add(p, &len, "\n");
+    }
+    return len;
+}
+
+static uint32_t port_input_info(AM335xPrussState *p, unsigned int port)
+{
+    PrussInput *in = &p->input[port];
+
+    return port_reply(p, "entries %zu period %" PRIu64 " origin %" PRIu64
+                      " iep %u%s\n",
+                      in->stim.count, in->stim.period, in->origin,
+                      in->origin_iep,
+                      in->pending_origin ? " (next start)" : "");
+}
+
+static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
+{
+    switch (file) {
+    case PF_TRACE:
+        *len = port_trace(p);
+        return 0;
+    case PF_STATS:
+        *len = port_stats(p);
+        return 0;
+    case PF_PADS:
+        *len = port_pads(p);
+        return 0;
+    case PF_OCP_WRITE_PAUSE_US:
+        *len = port_reply(p, "%u\n", p->ocp_write_pause_us);
+        return 0;
+    case PF_STOP_DELAY_US:
+        *len = port_reply(p, "%u\n", p->stop_delay_us);
+        return 0;
+    case PF_FREEZE:
+        *len = port_reply(p, "%u\n", p->freeze);
+        return 0;
+    }
+    if (file >= PF_INPUT && file < PF_NUM) {
+        *len = port_input_info(p, file - PF_INPUT);
+        return 0;
+    }
+    return -EINVAL;
+}
+
+/* The written text, NUL terminated, trimmed; NULL if it holds a NUL */
+static char *port_text(AM335xPrussState *p, uint32_t len, char *dst,
+                       size_t size)
+{
+    if (len >= size || memchr(p->buf, 0, len)) {
+        return NULL;
+    }
+    memcpy(dst, p->buf, len);
+    dst[len] = 0;
+    return g_strstrip(dst);
+}
+
+static int port_write_trace(AM335xPrussState *p, uint32_t len, uint32_t *reply)
+{
+    char text[64], *arg, *end;
+    uint64_t window = 0;
+
+    arg = port_text(p, len, text, sizeof(text));
+    if (!arg || strncmp(arg, "clear", 5) ||
+        (arg[5] && !g_ascii_isspace(arg[5]))) {
+        *reply = port_reply(p, "trace: write \"clear\" or \"clear CYCLES\"");
+        return -EINVAL;
+    }
+    arg = g_strchug(arg + 5);
+    if (*arg) {
+        errno = 0;
+        window = g_ascii_strtoull(arg, &end, 0);
+        if (errno || *end || !window || arg[0] == '-') {
+            *reply = port_reply(p, "trace: bad window \"%s\"", arg);
+            return -EINVAL;
+        }
+    }
+    p->trace_head = 0;
+    p->trace_count = 0;
+    p->trace_dropped = 0;
+    p->trace_until = window ? p->s->now + window : 0;
+    return 0;
+}
+
+/* "0xOFFSET 0xVALUE": set a pad as config-pin does (value at most 0x7f) */
+static int port_write_pads(AM335xPrussState *p, uint32_t len, uint32_t *reply)
+{
+    char text[64], *arg, *end;
+    uint64_t off, val;
+
+    arg = port_text(p, len, text, sizeof(text));
+    if (!arg) {
+        goto bad;
+    }
+    errno = 0;
+    off = g_ascii_strtoull(arg, &end, 0);
+    if (errno || end == arg || !g_ascii_isspace(*end)) {
+        goto bad;
+    }
+    arg = g_strchug(end);
+    val = g_ascii_strtoull(arg, &end, 0);
+    if (errno || end == arg || *end || off < 0x800 ||
+        off >= 0x800 + PADS_SIZE || off & 3 || val > PAD_MASK) {
+        goto bad;
+    }
+    p->pad[(off - 0x800) / 4] = val;
+    p->pad_writes++;
+    pads_changed(p);
+    return 0;
+bad:
+    *reply = port_reply(p,
+                        "pads: write \"0xOFFSET 0xVALUE\", "
+                        "a pad 0x800..0x%x and a value up to 0x%x",
+                        0x800 + PADS_SIZE - 4, PAD_MASK);
+    return -EINVAL;
+}
+
+static int port_write_knob(AM335xPrussState *p, uint32_t *knob, uint32_t max,
+                           uint32_t len, uint32_t *reply)
+{
+    char text[32], *arg, *end;
+    uint64_t v;
+
+    arg = port_text(p, len, text, sizeof(text));
+    errno = 0;
+    v = arg ? g_ascii_strtoull(arg, &end, 0) : 0;
+    if (!arg || errno || end == arg || *end || arg[0] == '-') {
+        *reply = port_reply(p, "a number from 0 to %u", max);
+        return -EINVAL;
+    }
+    if (v > max) {
+        *reply = port_reply(p, "at most %u", max);
+        return -ERANGE;
+    }
+    *knob = v;
+    return 0;
+}
+
+static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
+                      uint32_t *reply)
+{
+    switch (file) {
+    case PF_TRACE:
+        return port_write_trace(p, len, reply);
+    case PF_PADS:
+        return port_write_pads(p, len, reply);
+    case PF_OCP_WRITE_PAUSE_US:
+        return port_write_knob(p, &p->ocp_write_pause_us, KNOB_MAX_US, len,
+                               reply);
+    case PF_STOP_DELAY_US:
+        return port_write_knob(p, &p->stop_delay_us, KNOB_MAX_US, len, reply);
+    case PF_FREEZE:
+        return port_write_knob(p, &p->freeze, 1, len, reply);
+    }
+    return -EINVAL;
+}
+
+/* Check the complete lines a piece of stimulus text finishes */
+static int port_append(AM335xPrussState *p, PrussStage *st, uint32_t len,
+                       uint32_t *reply)
+{
+    char err[PRUSIM_REASON_LEN];
+    size_t end;
+    int ret;
+
+    if (len > STIM_MAX - st->len) {
+        return -EFBIG;
+    }
+    if (st->len + len > st->cap) {
+        st->cap = MAX(st->len + len, 2 * st->cap);
+        st->text = g_realloc(st->text, st->cap);
+    }
+    memcpy(st->text + st->len, p->buf, len);
+    end = st->len + len;
+    while (end > st->checked && st->text[end - 1] != '\n') {
+        end--;
+    }
+    if (end > st->checked &&
+        prusim_stim_parse(st->text + st->checked, end - st->checked, NULL,
+                          err, sizeof(err)) < 0) {
+        /* a piece may be wrong only out of context: check it all */
+        ret = prusim_stim_parse(st->text, end, NULL, err, sizeof(err));
+        if (ret < 0) {
+            *reply = port_reply(p, "input %u: %s", st->port, err);
+            return ret;
+        }
+    }
+    st->checked = MAX(st->checked, end);
+    st->len += len;
+    return 0;
+}
+
+static int port_install(AM335xPrussState *p, PrussStage *stg, uint32_t *reply)
+{
+    PrussInput *in = &p->input[stg->port];
+    struct prusim_stim st = { 0 };
+    char err[PRUSIM_REASON_LEN];
+    int n;
+
+    n = prusim_stim_parse(stg->text, stg->len, NULL, err, sizeof(err));
+    if (n > 0) {
+        st.cycle = g_new(uint64_t, n);
+        st.value = g_new(uint32_t, n);
+        st.count = n;
+        n = prusim_stim_parse(stg->text, stg->len, &st, err, sizeof(err));
+    }
+    if (n < 0) {
+        stim_free(&st);
+        *reply = port_reply(p, "input %u: %s; input unchanged", stg->port, err);
+        return n;
+    }
+    stim_free(&in->stim);
+    in->stim = st;
+    in->pending_origin = !prusim_active(p->s);
+    in->origin = p->s->now;
+    in->origin_iep = iep_count(p);
+    /* the simulator caches inputs until their announced next change */
+    prusim_input_changed(p->s, stg->port);
+    p->runnable = true;
+    return 0;
+}
+
+static void stage_free(PrussStage *st)
+{
+    g_free(st->text);
+    memset(st, 0, sizeof(*st));
+}
+
+/* Run a command of the test port.  BQL and lock held. */
+static void port_command(AM335xPrussState *p, uint32_t cmd)
+{
+    unsigned int op = cmd & 0xff, file = (cmd >> 8) & 0xff, h = cmd >> 16;
+    uint32_t len = MIN(p->port_len, (uint32_t)PORT_BUF_SIZE), reply = 0;
+    PrussStage *st = h < PORT_HANDLES ? &p->stage[h] : NULL;
+    int status = 0;
+    unsigned int i;
+
+    switch (op) {
+    case PORT_OP_LIST:
+        for (i = 0; i < PF_NUM; i++) {
+            port_add(p, &reply, "%s %s %s\n", port_file_name[i],
+                     i == PF_STATS ? "0400" : "0600",
+                     i >= PF_INPUT ? "staged" : "snapshot");
+        }
+        break;
+    case PORT_OP_READ:
+        status = port_read(p, file, &reply);
+        break;
+    case PORT_OP_WRITE:
+        status = file >= PF_INPUT ? -EINVAL : port_write(p, file, len, &reply);
+        break;
+    case PORT_OP_OPEN:
+        status = -EMFILE;
+        if (file < PF_INPUT || file >= PF_NUM) {
+            status = -EINVAL;
+            break;
+        }
+        for (i = 0; i < PORT_HANDLES; i++) {
+            if (!p->stage[i].used) {
+                p->stage[i].used = true;
+                p->stage[i].port = file - PF_INPUT;
+                p->port_handle = i;
+                status = 0;
+                break;
+            }
+        }
+        break;
+    case PORT_OP_APPEND:
+        status = st && st->used ? port_append(p, st, len, &reply) : -EBADF;
+        break;
+    case PORT_OP_CLOSE:
+    case PORT_OP_DROP:
+        if (!st || !st->used) {
+            status = -EBADF;
+            break;
+        }
+        if (op == PORT_OP_CLOSE && st->len) {
+            status = port_install(p, st, &reply);
+        }
+        stage_free(st);
+        break;
+    default:
+        status = -EINVAL;
+        break;
+    }
+    p->port_status = -status;     /* the register: a positive errno */
+    p->port_len = reply;
+    trace_am335x_pruss_port(op, file, status, reply);
+}
+
+static uint64_t port_read_reg(void *opaque, hwaddr off, unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+
+    switch (off) {
+    case PORT_REG_ID:
+        return PORT_ID;
+    case PORT_REG_VERSION:
+        return PORT_VERSION;
+    case PORT_REG_STATUS:
+        return p->port_status;
+    case PORT_REG_LEN:
+        return p->port_len;
+    case PORT_REG_BUFSIZE:
+        return PORT_BUF_SIZE;
+    case PORT_REG_HANDLE:
+        return p->port_handle;
+    }
+    qemu_log_mask(LOG_GUEST_ERROR,
+                  "am335x-pruss: test port read at 0x%" HWADDR_PRIx "\n", off);
+    return 0;
+}
+
+static void port_write_reg(void *opaque, hwaddr off, uint64_t val,
+                           unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+
+    switch (off) {
+    case PORT_REG_LEN:
+        p->port_len = val;
+        return;
+    case PORT_REG_CMD:
+        pruss_lock(p);
+        port_command(p, val);
+        pruss_update_irqs(p);
+        pruss_unlock(p, true);
+        return;
+    }
+    qemu_log_mask(LOG_GUEST_ERROR,
+                  "am335x-pruss: test port write at 0x%" HWADDR_PRIx "\n",
+                  off);
+}
+
+static const MemoryRegionOps port_ops = {
+    .read = port_read_reg,
+    .write = port_write_reg,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 4, .max_access_size = 4 },
+};
+
+/* ------------------------------------------------------------------ */
+/* The simulation thread                                               */
+
+/* Log why a core stopped, once. */
+static void report_stops(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+        struct prusim_status st;
+
+        prusim_get_status(p->s, i, &st);
+        if (st.state != PRUSIM_STOPPED) {
+            p->stopped_reported[i] = false;
+            continue;
+        }
+        if (!p->stopped_reported[i]) {
+            qemu_log_mask(LOG_GUEST_ERROR,
+                          "am335x-pruss: PRU%u stopped at pc 0x%x: %s\n",
+                          i, st.pc * 4, st.reason);
+        }
+        p->stopped_reported[i] = true;
+    }
+}
+
+static void *pruss_thread(void *opaque)
+{
+    AM335xPrussState *p = opaque;
+
+    qemu_mutex_lock(&p->lock);
+    while (!p->quit) {
+        int wait_ms = 0;
+        uint32_t pause_us;
+        int64_t t0;
+
+        /* knob: simulated time stands still, the registers still answer */
+        if (p->freeze) {
+            qemu_cond_wait(&p->wake, &p->lock);
+            continue;
+        }
+        if (pruss_held(p, &wait_ms)) {
+            qemu_cond_timedwait(&p->wake, &p->lock, wait_ms);
+            continue;
+        }
+        if (!p->runnable || !prusim_active(p->s)) {
+            p->runnable = false;
+            qemu_cond_wait(&p->wake, &p->lock);
+            continue;
+        }
+        /* MMIO handlers first: a handler waits at most one slice */
+        if (qatomic_read(&p->waiters)) {
+            qemu_cond_wait(&p->turn, &p->lock);
+            continue;
+        }
+        t0 = now_ns();
+        prusim_run(p->s, p->slice_cycles);
+        p->host_ns += now_ns() - t0;
+        /*
+         * Idle: every core waits for something only the outside brings
+         * (an ARM store, which comes through the MMIO handlers, or new
+         * input), and no input pattern has a change to come.
+         */
+        p->runnable = !p->s->waiting || inputs_pending(p);
+        report_stops(p);
+        pause_us = p->ocp_pause ? p->ocp_write_pause_us : 0;
+        p->ocp_pause = false;
+        if (p->irq_dirty || pause_us) {
+            bool dirty = p->irq_dirty;
+
+            qemu_mutex_unlock(&p->lock);
+            if (pause_us) {
+                g_usleep(pause_us);
+            }
+            if (dirty) {
+                qemu_mutex_lock_iothread();
+                qemu_mutex_lock(&p->lock);
+                pruss_update_irqs(p);
+                qemu_mutex_unlock_iothread();
+            } else {
+                qemu_mutex_lock(&p->lock);
+            }
+        }
+    }
+    qemu_mutex_unlock(&p->lock);
+    return NULL;
+}
+
+/* ------------------------------------------------------------------ */
+/* Device                                                              */
+
+static void pruss_reset_state(AM335xPrussState *p)
+{
+    struct prusim_config cfg;
+    unsigned int i;
+
+    prusim_default_config(&cfg);
+    /* while every core waits for the ARM, simulated time stands still */
+    cfg.stop_when_idle = true;
+    p->event_latency = cfg.event_latency;
+    prusim_init(p->s, &cfg, &pruss_sim_ops, p);
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        /* the AM335x's reset value: every line an input */
+        prusim_gpio_write(p->s, i, PRUSIM_GPIO_OE, 0xffffffff);
+        memset(p->gpio_reg[i], 0, sizeof(p->gpio_reg[i]));
+    }
+    for (i = 0; i < PADS_NUM; i++) {
+        p->pad[i] = PAD_RESET;
+    }
+    for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
+        stim_free(&p->input[i].stim);
+        memset(&p->input[i], 0, sizeof(p->input[i]));
+    }
+    for (i = 0; i < PORT_HANDLES; i++) {
+        stage_free(&p->stage[i]);
+    }
+    p->trace_head = p->trace_count = 0;
+    p->trace_dropped = p->trace_origin = p->trace_until = 0;
+    p->r30 = p->r30_shown = 0;
+    p->in_service = 0;
+    p->taken = 0;
+    p->expired_lines = 0;
+    p->expired_events = 0;
+    p->hold_since = 0;
+    p->freeze = 0;
+    p->runnable = false;
+    p->irq_dirty = true;
+}
+
+static void am335x_pruss_reset(DeviceState *dev)
+{
+    AM335xPrussState *p = AM335X_PRUSS(dev);
+
+    qemu_mutex_lock(&p->lock);
+    pruss_reset_state(p);
+    pruss_update_irqs(p);
+    qemu_mutex_unlock(&p->lock);
+}
+
+static void am335x_pruss_realize(DeviceState *dev, Error **errp)
+{
+    AM335xPrussState *p = AM335X_PRUSS(dev);
+    SysBusDevice *sbd = SYS_BUS_DEVICE(dev);
+    Error *err = NULL;
+    unsigned int i;
+
+    if (!p->slice_cycles) {
+        error_setg(errp, "slice-cycles must be at least 1");
+        return;
+    }
+    p->s = g_malloc0(sizeof(*p->s));
+    p->trace = g_new0(struct prusim_trace_rec, TRACE_LEN);
+
+    memory_region_init_io(&p->pruss_mr, OBJECT(p), &pruss_ops, p,
+                          "am335x-pruss.icss", PRUSS_SIZE);
+    sysbus_init_mmio(sbd, &p->pruss_mr);
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        g_autofree char *name = g_strdup_printf("am335x-pruss.gpio%u", i);
+
+        memory_region_init_io(&p->gpio_mr[i], OBJECT(p), &gpio_ops[i], p,
+                              name, GPIO_SIZE);
+        sysbus_init_mmio(sbd, &p->gpio_mr[i]);
+    }
+    memory_region_init_io(&p->pads_mr, OBJECT(p), &pads_ops, p,
+                          "am335x-pruss.pads", PADS_SIZE);
+    sysbus_init_mmio(sbd, &p->pads_mr);
+    memory_region_init_io(&p->port_mr, OBJECT(p), &port_ops, p,
+                          "am335x-pruss.port", PORT_SIZE);
+    sysbus_init_mmio(sbd, &p->port_mr);
+    memory_region_init_ram(&p->port_buf, OBJECT(p), "am335x-pruss.port-buf",
+                           PORT_BUF_SIZE, &err);
+    if (err) {
+        error_propagate(errp, err);
+        return;
+    }
+    p->buf = memory_region_get_ram_ptr(&p->port_buf);
+    sysbus_init_mmio(sbd, &p->port_buf);
+    for (i = 0; i < NUM_CATCH; i++) {
+        g_autofree char *name = g_strdup_printf("am335x-pruss.%s",
+                                                catch_regions[i].name);
+
+        memory_region_init_io(&p->catch_mr[i], OBJECT(p), &catch_ops,
+                              &p->catch_mr[i], name, catch_regions[i].size);
+        sysbus_init_mmio(sbd, &p->catch_mr[i]);
+    }
+    for (i = 0; i < AM335X_PRUSS_NUM_HOST_IRQS; i++) {
+        sysbus_init_irq(sbd, &p->host_irq[i]);
+    }
+    for (i = 0; i < AM335X_PRUSS_NUM_GPIO_IRQS; i++) {
+        sysbus_init_irq(sbd, &p->gpio_irq[i]);
+    }
+
+    qemu_mutex_init(&p->lock);
+    qemu_cond_init(&p->wake);
+    qemu_cond_init(&p->turn);
+    pruss_reset_state(p);
+    qemu_thread_create(&p->thread, "am335x-pruss", pruss_thread, p,
+                       QEMU_THREAD_JOINABLE);
+}
+
+static Property am335x_pruss_props[] = {
+    /* PRU cycles per slice of the thread: bounds an MMIO access's wait */
+    DEFINE_PROP_UINT32("slice-cycles", AM335xPrussState, slice_cycles, 2000),
+    /* longest hold of simulated time for one undelivered interrupt */
+    DEFINE_PROP_UINT32("hold-cap-ms", AM335xPrussState, hold_cap_ms, 200),
+    DEFINE_PROP_END_OF_LIST(),
+};
+
+/* A simulator in the middle of a slice cannot be saved: not migratable. */
+static const VMStateDescription vmstate_am335x_pruss = {
+    .name = TYPE_AM335X_PRUSS,
+    .unmigratable = 1,
+};
+
+static void am335x_pruss_class_init(ObjectClass *klass, void *data)
+{
+    DeviceClass *dc = DEVICE_CLASS(klass);
+
+    dc->realize = am335x_pruss_realize;
+    dc->reset = am335x_pruss_reset;
+    dc->vmsd = &vmstate_am335x_pruss;
+    dc->desc = "AM335x PRU-ICSS (prukit's prusim), GPIO banks and pads";
+    dc->user_creatable = false;
+    device_class_set_props(dc, am335x_pruss_props);
+}
+
+static const TypeInfo am335x_pruss_info = {
+    .name = TYPE_AM335X_PRUSS,
+    .parent = TYPE_SYS_BUS_DEVICE,
+    .instance_size = sizeof(AM335xPrussState),
+    .class_init = am335x_pruss_class_init,
+};
+
+
+DeviceState *am335x_pruss_create(qemu_irq *host_irq, qemu_irq *gpio_irq)
+{
+    DeviceState *dev = qdev_new(TYPE_AM335X_PRUSS);
+    SysBusDevice *sbd = SYS_BUS_DEVICE(dev);
+    unsigned int i, n = 0;
+
+    sysbus_realize_and_unref(sbd, &error_fatal);
+    sysbus_mmio_map(sbd, n++, PRUSS_BASE);
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        sysbus_mmio_map(sbd, n++, gpio_base[i]);
+    }
+    sysbus_mmio_map(sbd, n++, PADS_BASE);
+    sysbus_mmio_map(sbd, n++, PORT_BASE);
+    sysbus_mmio_map(sbd, n++, PORT_BUF_BASE);
+    for (i = 0; i < NUM_CATCH; i++) {
+        sysbus_mmio_map_overlap(sbd, n++, catch_regions[i].base, -1000);
+    }
+    for (i = 0; i < AM335X_PRUSS_NUM_HOST_IRQS; i++) {
+        sysbus_connect_irq(sbd, i, host_irq[i]);
+    }
+    for (i = 0; i < AM335X_PRUSS_NUM_GPIO_IRQS; i++) {
+        sysbus_connect_irq(sbd, AM335X_PRUSS_NUM_HOST_IRQS + i, gpio_irq[i]);
+    }
+    return dev;
+}
+
+static void am335x_pruss_register_types(void)
+{
+    type_register_static(&am335x_pruss_info);
+}
+type_init(am335x_pruss_register_types)
