@@ -25,6 +25,7 @@
 #include <linux/device.h>
 #include <linux/dma-mapping.h>
 #include <linux/err.h>
+#include <linux/firmware.h>
 #include <linux/io.h>
 #include <linux/jiffies.h>
 #include <linux/list.h>
@@ -40,6 +41,7 @@
 
 #include "compat.h"
 #include "prukit_pru.h"
+#include "prukit_pru_fw.h"
 
 /* Cores taken through rproc_get_by_phandle(), which does not claim them. */
 struct prukit_pru_claim {
@@ -210,14 +212,70 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 }
 EXPORT_SYMBOL_PRUKIT(devm_prukit_pru_get);
 
+/*
+ * The system events the consumer's own node takes from the PRU-ICSS's INTC
+ * (the "interrupt-controller" child of the core's parent, as pru_rproc
+ * finds it for .pru_irq_map), as a bitmap.
+ */
+static u64 prukit_pru_own_events(struct prukit_pru *pru)
+{
+	struct device_node *parent, *intc;
+	struct of_phandle_args args;
+	u64 events = 0;
+	int i;
+
+	parent = of_get_parent(pru->rproc->dev.parent->of_node);
+	intc = parent ? of_get_child_by_name(parent, "interrupt-controller") : NULL;
+	of_node_put(parent);
+	if (!intc)
+		return 0;
+	for (i = 0; !of_irq_parse_one(pru->dev->of_node, i, &args); i++) {
+		if (args.np == intc && args.args_count && args.args[0] < 64)
+			events |= BIT_ULL(args.args[0]);
+		of_node_put(args.np);
+	}
+	of_node_put(intc);
+	return events;
+}
+
+/*
+ * The PRU remoteproc driver maps the events of a firmware's .pru_irq_map
+ * when the core starts and disposes of the mappings when it stops.  An
+ * event the consumer's node also takes is the same Linux interrupt: the
+ * disposal would free it under the driver's handler (and the driver's own
+ * free_irq() would then free an interrupt that is gone).  Such firmware is
+ * refused.  A file that cannot be read or parsed here is left to
+ * rproc_boot(), which reports it.
+ */
+static int prukit_pru_check_irq_map(struct prukit_pru *pru, const char *firmware)
+{
+	const struct firmware *fw;
+	u64 own, mapped;
+	int ret;
+
+	own = prukit_pru_own_events(pru);
+	if (!own || firmware_request_nowarn(&fw, firmware, pru->dev))
+		return 0;
+	ret = prukit_pru_fw_irq_events(fw->data, fw->size, &mapped);
+	release_firmware(fw);
+	if (ret || !(own & mapped))
+		return 0;
+	dev_err(pru->dev, "%s maps system event %u in its .pru_irq_map, which %pOF takes as its interrupt: the PRU remoteproc driver would dispose of that mapping when the core stops, under the driver's handler\n",
+		firmware, (unsigned int)__ffs64(own & mapped), pru->dev->of_node);
+	return -EBUSY;
+}
+
 /**
  * prukit_pru_boot() - load firmware into the core and start it
  * @pru: the core
  * @firmware: file under /lib/firmware, or NULL for the "firmware-name" entry
  *
  * Fails with -EBUSY if the core already runs (started through remoteproc
- * sysfs, say): prukit never takes over firmware someone else started.
- * prukit_pru_shutdown(), or the driver unbinding, stops it again.
+ * sysfs, say): prukit never takes over firmware someone else started; and
+ * if the firmware's .pru_irq_map maps a system event that the consumer's
+ * node takes as its interrupt (the PRU remoteproc driver would dispose of
+ * that interrupt at the core's stop).  prukit_pru_shutdown(), or the
+ * driver unbinding, stops it again.
  *
  * Return: 0 or a negative errno (also logged).
  */
@@ -239,6 +297,9 @@ int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
 			dev_name(&rproc->dev), rproc->firmware);
 		return -EBUSY;
 	}
+	ret = prukit_pru_check_irq_map(pru, firmware);
+	if (ret)
+		return ret;
 	ret = prukit_rproc_set_firmware(rproc, firmware);
 	if (ret) {
 		dev_err(pru->dev, "cannot set firmware %s on PRU %s: %d\n", firmware,

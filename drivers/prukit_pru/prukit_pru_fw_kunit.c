@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * KUnit tests of prukit_pru_fw_irq_events(): the system events of a PRU
+ * firmware's .pru_irq_map, from ELF images built here, well-formed and not.
+ */
+#include <kunit/test.h>
+#include <linux/elf.h>
+#include <linux/string.h>
+
+#include "prukit_pru_fw.h"
+
+#define IMG_SIZE	512
+
+/* strtab offsets of the names below */
+static const char fw_strtab[] = "\0.pru_irq_map\0.shstrtab\0.text";
+#define NAME_MAP	1
+#define NAME_SHSTRTAB	14
+#define NAME_TEXT	24
+
+static void put32(u8 *p, u32 v)
+{
+	p[0] = v;
+	p[1] = v >> 8;
+	p[2] = v >> 16;
+	p[3] = v >> 24;
+}
+
+static void put16(u8 *p, u16 v)
+{
+	p[0] = v;
+	p[1] = v >> 8;
+}
+
+/*
+ * An ELF32 image: header, the map bytes at 64, the string table at 128,
+ * four section headers at 256 (null, .text, .pru_irq_map named @map_name,
+ * .shstrtab).  Returns its size.
+ */
+static size_t fw_image(u8 *img, const u8 *map, u32 map_len, u32 map_name)
+{
+	u8 *sh = img + 256;
+
+	memset(img, 0, IMG_SIZE);
+	memcpy(img, ELFMAG, SELFMAG);
+	img[EI_CLASS] = ELFCLASS32;
+	img[EI_DATA] = ELFDATA2LSB;
+	img[EI_VERSION] = EV_CURRENT;
+	put16(img + 16, ET_EXEC);
+	put16(img + 18, 144);		/* EM_TI_PRU */
+	put32(img + 32, 256);		/* e_shoff */
+	put16(img + 46, 40);		/* e_shentsize */
+	put16(img + 48, 4);		/* e_shnum */
+	put16(img + 50, 3);		/* e_shstrndx */
+	memcpy(img + 64, map, map_len);
+	memcpy(img + 128, fw_strtab, sizeof(fw_strtab));
+	/* section 1: .text (not the map) */
+	put32(sh + 40, NAME_TEXT);
+	put32(sh + 40 + 16, 52);
+	put32(sh + 40 + 20, 8);
+	/* section 2: the map */
+	put32(sh + 80, map_name);
+	put32(sh + 80 + 16, 64);
+	put32(sh + 80 + 20, map_len);
+	/* section 3: the section name string table */
+	put32(sh + 120, NAME_SHSTRTAB);
+	put32(sh + 120 + 16, 128);
+	put32(sh + 120 + 20, sizeof(fw_strtab));
+	return 256 + 4 * 40;
+}
+
+static void prukit_pru_fw_map(struct kunit *test)
+{
+	static const u8 map[] = { 0, 3, 16, 2, 2, 17, 0, 0, 63, 9, 9 };
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	u64 ev;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
+									NAME_MAP), &ev));
+	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(16) | BIT_ULL(17) | BIT_ULL(63));
+}
+
+static void prukit_pru_fw_no_map(struct kunit *test)
+{
+	static const u8 map[] = { 0, 1, 20, 4, 4 };
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	u64 ev = ~0ull;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	/* the same bytes in a section of another name */
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
+									NAME_TEXT), &ev));
+	KUNIT_EXPECT_EQ(test, ev, 0ull);
+	/* no section table at all */
+	put16(img + 48, 0);
+	ev = ~0ull;
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, IMG_SIZE, &ev));
+	KUNIT_EXPECT_EQ(test, ev, 0ull);
+}
+
+static void prukit_pru_fw_events_above_63(struct kunit *test)
+{
+	/* the AM335x INTC has 64 events; the map's byte may say more */
+	static const u8 map[] = { 0, 2, 64, 0, 0, 5, 1, 1 };
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	u64 ev;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
+									NAME_MAP), &ev));
+	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(5));
+}
+
+static void prukit_pru_fw_malformed(struct kunit *test)
+{
+	static const u8 map[] = { 0, 1, 20, 4, 4 };
+	static const u8 bad_type[] = { 1, 1, 20, 4, 4 };
+	static const u8 bad_count[] = { 0, 2, 20, 4, 4 };
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	size_t size;
+	u64 ev;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
+	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(20));
+
+	/* not an ELF file, ELF64, big-endian, too short for a header */
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, 40, &ev));
+	img[0] = 'X';
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	img[EI_CLASS] = ELFCLASS64;
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	img[EI_DATA] = ELFDATA2MSB;
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/* a section table beyond the file, a string table index out of range */
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size - 1, &ev));
+	put16(img + 50, 4);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/* a map section past the end of the file */
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 256 + 80 + 16, 0xfffffff0);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/* a map of another type, or whose size disagrees with its count */
+	size = fw_image(img, bad_type, sizeof(bad_type), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, bad_count, sizeof(bad_count), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/* a section name without its terminating NUL is no match */
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 256 + 120 + 20, NAME_MAP + 5);	/* strtab cut inside ".pru_irq_map" */
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
+	KUNIT_EXPECT_EQ(test, ev, 0ull);
+}
+
+static struct kunit_case prukit_pru_fw_cases[] = {
+	KUNIT_CASE(prukit_pru_fw_map),
+	KUNIT_CASE(prukit_pru_fw_no_map),
+	KUNIT_CASE(prukit_pru_fw_events_above_63),
+	KUNIT_CASE(prukit_pru_fw_malformed),
+	{}
+};
+
+static struct kunit_suite prukit_pru_fw_suite = {
+	.name = "prukit_pru_fw",
+	.test_cases = prukit_pru_fw_cases,
+};
+
+kunit_test_suite(prukit_pru_fw_suite);
+
+MODULE_DESCRIPTION("KUnit tests of prukit_pru's firmware reader");
+MODULE_LICENSE("GPL");
