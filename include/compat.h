@@ -112,15 +112,13 @@ void *rproc_da_to_va(PRUKIT_RPROC_DA_TO_VA_ARGS);
  * or <linux/pruss.h> (TI's 5.10).  Without them, every core is reached
  * with rproc_get_by_phandle().
  */
-#if IS_ENABLED(CONFIG_PRU_REMOTEPROC)
-/* (Nested: sparse 0.6.4 cannot evaluate __has_include() next to &&.) */
-#if __has_include("linux/remoteproc/pruss.h")
+/* (The top-level Kbuild looks for the headers: PRUKIT_HAVE_*_PRUSS_H.) */
+#if IS_ENABLED(CONFIG_PRU_REMOTEPROC) && defined(PRUKIT_HAVE_REMOTEPROC_PRUSS_H)
 #include <linux/remoteproc/pruss.h>
 #define PRUKIT_HAVE_PRU_RPROC_GET	1
-#elif __has_include("linux/pruss.h")
+#elif IS_ENABLED(CONFIG_PRU_REMOTEPROC) && defined(PRUKIT_HAVE_LINUX_PRUSS_H)
 #include <linux/pruss.h>
 #define PRUKIT_HAVE_PRU_RPROC_GET	1
-#endif
 #endif
 #ifdef PRUKIT_HAVE_PRU_RPROC_GET
 #define prukit_pru_rproc_get(np, index)	pru_rproc_get(np, index, NULL)

@@ -39,13 +39,26 @@ prusim_check() {
 	make -s -C tools/prusim && tests/prusim/run.sh
 }
 
+# The QEMU of the VM's board path: Debian's 7.2 with prukit's PRU-ICSS
+# (scripts/qemu-build.sh; about 10 CPU minutes cold, then cached).
+qemu_check() {
+	local bin
+	bin=$(scripts/qemu-build.sh) || { echo "FAIL: scripts/qemu-build.sh"; return 1; }
+	if "$bin" -M vexpress-a15,help 2>&1 | grep -q '^ *pruss='; then
+		echo "PASS: qemu-system-arm with the AM335x PRU-ICSS (-M vexpress-a15,pruss=on): $bin"
+	else
+		echo "FAIL: $bin has no vexpress-a15 option pruss"
+		return 1
+	fi
+}
+
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
 step harness 36 harness_check				# [12 + 25]
 step checkpatch 88 scripts/checkpatch.sh		# [93], one per C file
-step kernels 5 scripts/kernels.sh 5.10 6.1 6.12		# [6]
-step pru-rproc 2 scripts/pru-rproc-build.sh		# [2], pru_rproc_get() compiles
+step kernels 16 scripts/kernels.sh 5.10 6.1 6.12	# [18]: armmp and board builds
+step qemu 1 qemu_check					# [1]
 step firmware 90 firmware_check				# [96], grows with the images
 step overlays 380 scripts/overlays.sh --check		# [394]
 step dkms 7 scripts/dkms-test.sh			# [8]

@@ -1,21 +1,38 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# kernels.sh [--build-only] [SERIES...]
+# kernels.sh [--build-only [--board]] [SERIES...]
 #
 # Cross-build every prukit module for ARM against Debian's armmp kernels
 # (default: 5.10 6.1 6.12) with W=1 and warnings as errors, then run sparse
-# (C=2) over our sources and fail on any sparse warning in them.  Each build
-# happens in out/kernels/<release>/ so the source tree stays clean.  Prints
-# the vermagic of every module built, and "PASS:/FAIL:" lines.  With
-# --build-only: just the builds (for the VM harness).
+# (C=2) over our sources and fail on any sparse warning in them.  Each
+# kernel is built twice:
+#  - as Debian ships it (out/kernels/<release>/): no PRU drivers of its own;
+#  - as a BeagleBone kernel has it ("board", out/kernels/<release>-board/):
+#    with the kernel's own pruss, pruss_intc and pru_rproc, built from
+#    Debian's linux-source by scripts/pru-kit.sh (out/kernels/<release>-pru-kit/)
+#    and prukit compiled with CONFIG_PRU_REMOTEPROC, CONFIG_TI_PRUSS and
+#    CONFIG_TI_PRUSS_INTC as modules, against their Module.symvers.  There the
+#    PRU-consumer layer takes its cores with pru_rproc_get() where the
+#    kernel has it (6.12; include/compat.h) and with its fallback where not
+#    (5.10, 6.1), as on a board with that kernel - checked with nm.  This is
+#    what the VM's board path loads (scripts/vm.sh).
+# The source tree stays clean.  Prints the vermagic of every module built,
+# and "PASS:/FAIL:" lines.  With --build-only: just the builds, the first
+# variant, or with --board the second (for the VM harness).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
 build_only=0
+variants="armmp board"
 if [ "${1:-}" = --build-only ]; then
 	build_only=1
+	variants=armmp
 	shift
+	if [ "${1:-}" = --board ]; then
+		variants=board
+		shift
+	fi
 fi
 [ $# -gt 0 ] || set -- 5.10 6.1 6.12
 need_pkgs gcc-arm-linux-gnueabihf sparse kmod make bc bison flex libssl-dev libelf-dev
@@ -35,47 +52,84 @@ copy_sources() {
 			-print0 | xargs -0 cp --parents -t "$dest")
 }
 
-while read -r series kver kdir _root; do
+# build_variant SERIES KVER KDIR VARIANT
+build_variant() {
+	local series=$1 kver=$2 kdir=$3 variant=$4 out log slog kit pkit ko ours
+	local kcflags=-Werror extra=(CONFIG_PRUKIT_TEST_MODULES=m) symvers=()
 	out=$PRUKIT_TOP/out/kernels/$kver
+	[ "$variant" = board ] && out=$out-board
 	copy_sources "$out"
 	log=$out/build.log
-	kcflags=-Werror
-	extra=(CONFIG_PRUKIT_TEST_MODULES=m)
 	# A kernel without rpmsg (Debian's 5.10 armmp; TI's 5.10 has it) gets
 	# the kernel's own rpmsg modules built beside it, so that rpmsg users
 	# are still compiled and linked against the real interface.
 	if ! grep -q '^CONFIG_RPMSG=[ym]' "$kdir/.config"; then
-		kit=$("$PRUKIT_TOP/scripts/rpmsg-kit.sh" "$series" "$kdir" "$out-rpmsg-kit")
+		kit=$("$PRUKIT_TOP/scripts/rpmsg-kit.sh" "$series" "$kdir" \
+			"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit")
 		kcflags="$kcflags -DCONFIG_RPMSG_MODULE=1"
-		extra+=(CONFIG_RPMSG=m KBUILD_EXTRA_SYMBOLS="$kit/Module.symvers")
+		extra+=(CONFIG_RPMSG=m)
+		symvers+=("$kit/Module.symvers")
 		echo "  ($kver has no CONFIG_RPMSG: rpmsg_core built from linux-source-$series)"
 	fi
+	if [ "$variant" = board ]; then
+		pkit=$("$PRUKIT_TOP/scripts/pru-kit.sh" "$series" "$kdir" \
+			"$PRUKIT_TOP/out/kernels/$kver-pru-kit") || {
+			fail "the kernel's PRU drivers for $kver (scripts/pru-kit.sh)"
+			return
+		}
+		kcflags="$kcflags -DCONFIG_PRU_REMOTEPROC_MODULE=1 -DCONFIG_TI_PRUSS_MODULE=1"
+		kcflags="$kcflags -DCONFIG_TI_PRUSS_INTC_MODULE=1"
+		symvers+=("$pkit/Module.symvers")
+	fi
+	[ ${#symvers[@]} -eq 0 ] || extra+=(KBUILD_EXTRA_SYMBOLS="${symvers[*]}")
 	kmake=(make -C "$kdir" M="$out" ARCH=arm CROSS_COMPILE=$cross CC=${cross}gcc
 	       W=1 KCFLAGS="$kcflags" "${extra[@]}" -j"$(ncpus)")
 	if "${kmake[@]}" modules >"$log" 2>&1 && ! grep -qi 'warning' "$log"; then
-		pass "build $kver (W=1, -Werror)"
+		pass "build $kver ($variant; W=1, -Werror)"
 	else
 		grep -iE 'warning|error' "$log" | head -n 30
-		fail "build $kver, see $log"
-		continue
+		fail "build $kver ($variant), see $log"
+		return
 	fi
 
-	[ $build_only -eq 1 ] && continue
+	[ $build_only -eq 1 ] && return
 
 	# Sparse over our sources: C=2 checks every file whether rebuilt or not.
 	slog=$out/sparse.log
 	"${kmake[@]}" C=2 CHECK="sparse" modules >"$slog" 2>&1 || true
 	ours=$(grep -E ': (warning|error):' "$slog" | grep -F "$out/" || true)
 	if [ -z "$ours" ] && grep -q ' CHECK ' "$slog"; then
-		pass "sparse $kver ($(grep -c ' CHECK ' "$slog") files)"
+		pass "sparse $kver ($variant; $(grep -c ' CHECK ' "$slog") files)"
 	else
 		printf '%s\n' "$ours" | head -n 30
-		fail "sparse $kver, see $slog"
+		fail "sparse $kver ($variant), see $slog"
+	fi
+
+	# How the consumer layer takes its cores: pru_rproc_get() only where
+	# the kernel has its PRU remoteproc driver and the function (6.12's
+	# <linux/remoteproc/pruss.h>), the fallback everywhere else.
+	ko=$out/drivers/prukit_pru/prukit_pru.ko
+	if ${cross}nm -u "$ko" | grep -qw pru_rproc_get; then
+		if [ "$variant" = board ] && grep -qw pru_rproc_get "$pkit/Module.symvers"; then
+			pass "prukit_pru takes cores with pru_rproc_get() on $kver ($variant)"
+		else
+			fail "prukit_pru calls pru_rproc_get(), which $kver ($variant) lacks"
+		fi
+	elif [ "$variant" = board ] && grep -qw pru_rproc_get "$pkit/Module.symvers"; then
+		fail "prukit_pru does not call pru_rproc_get(), which $kver ($variant) has"
+	else
+		pass "prukit_pru takes cores with rproc_get_by_phandle() on $kver ($variant: no pru_rproc_get())"
 	fi
 
 	while IFS= read -r -d '' ko; do
 		printf '  %-28s %s\n' "$(basename "$ko")" "$(modinfo -F vermagic "$ko")"
 	done < <(find "$out" -name '*.ko' -print0 | sort -z)
+}
+
+while read -r series kver kdir _root; do
+	for variant in $variants; do
+		build_variant "$series" "$kver" "$kdir" "$variant"
+	done
 done < <("$PRUKIT_TOP/scripts/fetch-kernels.sh" "$@")
 
 exit $failed

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# linux-source.sh SERIES [full|dt|rpmsg|modpost]
+# linux-source.sh SERIES [full|dt|rpmsg|pru|modpost]
 #
 # Print the path of an extracted Debian linux-source-SERIES tree (5.10, 6.1,
 # 6.12), fetching the package through the private apt configuration
@@ -9,17 +9,32 @@
 #   full     everything (KUnit, checkpatch) - the default
 #   dt       dts, dt-bindings, scripts/dtc and the binding documents
 #   rpmsg    drivers/rpmsg (rpmsg modules for kernels built without them)
+#   pru      the kernel's PRU drivers for kernels built without them
+#            (scripts/pru-kit.sh): drivers/soc/ti/pruss*,
+#            drivers/irqchip/irq-pruss-intc.c, drivers/remoteproc/pru_rproc.[ch],
+#            remoteproc_internal.h and remoteproc_elf_helpers.h,
+#            include/linux/pruss_driver.h and include/linux/remoteproc/pruss.h;
+#            what a release lacks (5.10 has no pru_rproc) is left out
 #   modpost  what modpost is built from (for cross builds)
 set -euo pipefail
+# shellcheck source=SCRIPTDIR/lib.sh
 . "$(dirname "$0")/lib.sh"
+# shellcheck source=SCRIPTDIR/papt.sh
 . "$(dirname "$0")/papt.sh"
 
-series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg|modpost]}
+series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg|pru|modpost]}
 what=${2:-full}
+wildcards=()
 case $what in
 full) paths=() ;;
 dt) paths=(arch/arm/boot/dts include/dt-bindings scripts/dtc Documentation/devicetree/bindings) ;;
 rpmsg) paths=(drivers/rpmsg) ;;
+pru)
+	paths=('drivers/soc/ti/pruss*' drivers/irqchip/irq-pruss-intc.c 'drivers/remoteproc/pru_rproc.[ch]'
+	       drivers/remoteproc/remoteproc_internal.h drivers/remoteproc/remoteproc_elf_helpers.h
+	       include/linux/pruss_driver.h include/linux/remoteproc/pruss.h)
+	wildcards=(--wildcards)
+	;;
 modpost) paths=(scripts/mod scripts/include include/linux/license.h include/linux/mod_devicetable.h include/linux/module_symbol.h) ;;
 *) die "unknown part '$what'" ;;
 esac
@@ -43,8 +58,9 @@ if [ ! -e "$dest/.complete" ]; then
 	msg "extracting $pkg ($pkgver, $what) into $dest"
 	rm -rf "$dest"
 	mkdir -p "$dest"
-	# A part some releases lack (scripts/include before 6.x) is not an error.
-	tar -C "$dest" -xf "$tarball" "${paths[@]/#/linux-source-$series/}" 2>/dev/null || true
+	# A part some releases lack (scripts/include before 6.x, pru_rproc
+	# before 5.11) is not an error.
+	tar -C "$dest" -xf "$tarball" "${wildcards[@]}" "${paths[@]/#/linux-source-$series/}" 2>/dev/null || true
 	[ -d "$top" ] || die "cannot extract $pkg"
 	touch "$dest/.complete"
 fi

@@ -4,7 +4,17 @@
 # The prukit VM harness: boots Debian's own armmp kernels under QEMU (TCG,
 # 2 CPUs) with a Debian armhf userland, prukit's modules for that kernel,
 # its firmware, and the kernel's device tree of the board plus prukit's
-# simulator overlays (tests/vm/overlays).
+# overlays.  Two boots:
+#
+#  board    (the default) the board path: QEMU's vexpress-a15 with
+#	    prukit's AM335x PRU-ICSS (pruss=on; qemu/am335x_pruss.c, built by
+#	    scripts/qemu-build.sh), tests/vm/board/am335x-pruss.dtso, and the
+#	    kernel's own PRU drivers pruss, irq_pruss_intc and pru_rproc
+#	    (scripts/pru-kit.sh) under prukit's modules built as for a
+#	    BeagleBone kernel (kernels.sh --board).  pru_sim is not there.
+#  pru_sim  the in-guest simulator pru_sim (tests/vm/board/pruss-sim.dtso),
+#	    for rpmsg only: the kernel's pru_rproc has no kick.  A test that
+#	    needs it says "prukit-vm-boot: pru_sim" in a line of its own.
 #
 # The board is QEMU's vexpress-a15 rather than "virt": its RAM is at
 # 0x80000000, where an AM335x has its DDR, so PRU firmware sees the ARM's
@@ -14,24 +24,30 @@
 # addresses on an AM335x (GPIO banks at 0x44e07000, 0x4804c000, ...).
 #
 #   vm.sh run KVER SCRIPT [IN] [OUT]   (make vmrun)
-#	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
+#	Boot SERIES KVER (5.10, 6.1, 6.12) on the board path (PRUKIT_VM_BOOT=
+#	pru_sim: on pru_sim), run SCRIPT as root in the guest
 #	with /proc, /sys, /dev and debugfs mounted, prukit's modules loaded
 #	and the host directory IN unpacked at /in (also the working directory);
 #	copy the guest's /out to OUT; exit with the script's status.  With
 #	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
-#	For each kernel, boot once and run the tests in tests/vm/cases (all,
-#	or those named in TESTS), bring back their logs and artifacts to
-#	out/vm/<kernel>/ and print "N passed, N failed" per kernel and overall.
-#	VM_JOBS kernels boot at once (default: one per host CPU).
+#	For each kernel, boot once on the board path and once on pru_sim (if
+#	any of the tests wants it) and run the tests in tests/vm/cases and
+#	drivers/*/tests/vm/cases (all, or those named in TESTS), bring back
+#	their logs and artifacts to out/vm/<kernel>/ (out/vm/<kernel>-pru_sim/)
+#	and print "N passed, N failed" per kernel and overall.  VM_JOBS boots
+#	run at once (default: one per host CPU).
 #
 # Either fails on any oops, BUG, WARN, lockdep report, hung task or
-# poisoned page found written in the kernel log, and bounds every boot by a timeout (VM_TIMEOUT seconds).
+# poisoned page found written in the kernel log, on a register access the
+# QEMU PRU-ICSS does not model (its log, -d unimp,guest_errors; the guest
+# also fails the test that made it), and bounds every boot by a timeout
+# (VM_TIMEOUT seconds).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-need_pkgs qemu-system-arm device-tree-compiler cpio kmod tar sigrok-cli
+need_pkgs device-tree-compiler cpio kmod tar sigrok-cli
 
 # One boot runs every VM test of a kernel: about 8 minutes on an idle
 # 2-core machine, but over 15 when the host's CPUs are shared (measured with
@@ -46,7 +62,7 @@ VM_JOBS=${VM_JOBS:-$(ncpus)}
 VM_MEM=${VM_MEM:-1024}
 VM_CPUS=${VM_CPUS:-2}
 VMDIR=$PRUKIT_TOP/tests/vm
-machine=(-M vexpress-a15 -smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
 # The board's sound device needs no host audio.
 export QEMU_AUDIO_DRV=none
 
@@ -55,31 +71,67 @@ export QEMU_AUDIO_DRV=none
 # a write into a freed page is reported when the page is allocated again.
 splat_re='Oops|BUG:|WARNING:|Unable to handle kernel|Kernel panic|INFO: task .* blocked|possible (recursive|circular) locking|UBSAN:|refcount_t:|list_(add|del) corruption|general protection|stack-protector|pagealloc: memory corruption|blocked for more than'
 
-# build_prukit SERIES - cross-build prukit's modules and firmware for SERIES
-# (no-ops when up to date) and set kver, kdir and kimage.
+# The QEMU that boots both: Debian's 7.2 with prukit's PRU-ICSS
+# (scripts/qemu-build.sh; without pruss=on it is QEMU's own vexpress-a15).
+qemu=
+qemu_binary() {
+	[ -n "$qemu" ] || qemu=$("$PRUKIT_TOP/scripts/qemu-build.sh") ||
+		die "building qemu-system-arm failed"
+}
+
+# build_prukit SERIES BOOT - cross-build prukit's modules (as the boot
+# needs them) and firmware for SERIES (no-ops when up to date) and set
+# kver, kdir and kimage.
 build_prukit() {
-	local series=$1 line
+	local series=$1 boot=$2 line flavour=()
 	line=$("$PRUKIT_TOP/scripts/fetch-kernels.sh" --image "$series")
 	read -r _ kver kdir _ kimage <<<"$line"
-	"$PRUKIT_TOP/scripts/kernels.sh" --build-only "$series" >/dev/null ||
-		die "building prukit for $kver failed (see out/kernels/$kver/build.log)"
+	[ "$boot" = board ] && flavour=(--board)
+	"$PRUKIT_TOP/scripts/kernels.sh" --build-only "${flavour[@]}" "$series" >/dev/null ||
+		die "building prukit for $kver ($boot) failed (see out/kernels/$kver*/build.log)"
 	make -s -C "$PRUKIT_TOP" firmware >/dev/null
 	make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
+	qemu_binary
+}
+
+# case_boot PATH - the boot a test case runs in: "pru_sim" if it says so
+# in a line "prukit-vm-boot: pru_sim", else "board".
+case_boot() {
+	if grep -q '^# prukit-vm-boot: *pru_sim *$' "$1"; then
+		echo pru_sim
+	else
+		echo board
+	fi
 }
 
 # The device tree: the kernel's own vexpress-a15 tree, the simulated
-# PRU-ICSS and board (tests/vm/overlays, which carry a BeagleBone tree's
-# labels), then every overlay that "make overlays_install" ships for the
-# Black, exactly those blobs, then the user's own overlays (make vmrun OVERLAY=...: space
-# separated .dtso paths in $PRUKIT_VM_OVERLAYS).  QEMU adds its virtio-mmio
-# nodes when it boots.
+# PRU-ICSS and board of the boot (tests/vm/board: the QEMU device's or
+# pru_sim's, both with a BeagleBone tree's labels), the test-only nodes
+# (tests/vm/overlays), then every overlay that "make overlays_install"
+# ships for the Black, exactly those blobs, then the user's own overlays
+# (make vmrun OVERLAY=...: space separated .dtso paths in
+# $PRUKIT_VM_OVERLAYS).  QEMU adds its virtio-mmio nodes when it boots.
 make_dtb() {
-	local dir=$1 o name base
+	local dir=$1 boot=$2 o name base board
 	mkdir -p "$dir"
 	rm -f "$dir"/*.dtbo
 	base=$(find "$kimage/usr/lib/linux-image-$kver" -name vexpress-v2p-ca15-tc1.dtb | head -n 1)
 	[ -n "$base" ] || die "no vexpress-v2p-ca15-tc1.dtb in linux-image-$kver"
 	local overlays=()
+	case $boot in
+	board) board=$VMDIR/board/am335x-pruss.dtso ;;
+	pru_sim) board=$VMDIR/board/pruss-sim.dtso ;;
+	*) die "no boot $boot" ;;
+	esac
+	"$PRUKIT_TOP/scripts/dtso-build.sh" "$board" "$dir/board.dtbo" ||
+		die "cannot build overlay $board"
+	overlays+=("$dir/board.dtbo")
+	# Debian's dtbs carry no symbols: give the GIC its label, for the
+	# board's interrupts (interrupt-parent = <&gic>)
+	cp "$base" "$dir/base.dtb"
+	base=$dir/base.dtb
+	fdtput -c "$base" /__symbols__
+	fdtput -t s "$base" /__symbols__ gic /interrupt-controller@2c001000
 	for o in "$VMDIR"/overlays/*.dtso; do
 		[ -e "$o" ] || continue
 		name=$(basename "$o" .dtso)
@@ -111,10 +163,11 @@ make_dtb() {
 	msg "device tree: ${overlays[*]##*/}"
 }
 
-# make_initrd DIR MODE SCRIPT_OR_TESTS - the userland plus an archive with
-# the kernel's modules, prukit's modules and firmware, and the test harness.
+# make_initrd DIR MODE SCRIPT_OR_TESTS BOOT - the userland plus an archive
+# with the kernel's modules, prukit's modules (as the boot has them) and
+# firmware, and the test harness.
 make_initrd() {
-	local dir=$1 mode=$2 arg=$3 stage=$1/stage rootfs m f d
+	local dir=$1 mode=$2 arg=$3 boot=$4 stage=$1/stage rootfs m f d
 	rootfs=$("$PRUKIT_TOP/scripts/vm-rootfs.sh")
 	rm -rf "$stage"
 	mkdir -p "$stage"/{prukit/tests,lib/firmware/prukit,lib/modules/"$kver"}
@@ -130,9 +183,14 @@ make_initrd() {
 	done <"$VMDIR/modules"
 	cp "$kimage/lib/modules/$kver"/modules.{order,builtin,builtin.modinfo} "$mods/" 2>/dev/null || true
 	mkdir -p "$mods/updates"
-	for d in "$PRUKIT_TOP/out/kernels/$kver" "$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
+	local builds=("$PRUKIT_TOP/out/kernels/$kver")
+	[ "$boot" = board ] &&
+		builds=("$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit")
+	for d in "${builds[@]}" "$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
 	done
+	# The board path has the kernel's PRU drivers and no pru_sim at all.
+	[ "$boot" = board ] && rm -f "$mods/updates/pru_sim.ko"
 	depmod -b "$stage" -e -E "$kdir/Module.symvers" "$kver" 2>"$dir/depmod.log"
 	if grep -q 'needs unknown symbol' "$dir/depmod.log"; then
 		cat "$dir/depmod.log" >&2
@@ -163,9 +221,12 @@ make_initrd() {
 		die "make udev_install server_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
+	local modules=$PRUKIT_VM_MODULES_SIM
+	[ "$boot" = board ] && modules=$PRUKIT_VM_MODULES_BOARD
 	{
 		echo "PRUKIT_MODE=$mode"
-		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
+		echo "PRUKIT_BOOT=$boot"
+		echo "PRUKIT_MODULES='$modules'"
 		[ "$mode" = test ] && echo "PRUKIT_TESTS='$arg'"
 		echo "PRUKIT_KVER='$kver'"
 	} >"$stage/prukit/config"
@@ -180,14 +241,19 @@ make_initrd() {
 	{ cat "$rootfs"; head -c "$pad" /dev/zero; cat "$dir/prukit.cpio"; } >"$dir/initrd"
 }
 
-# boot DIR IN OUT - boot the prepared kernel; console to DIR/console.log.
+# boot DIR IN OUT BOOT - boot the prepared kernel; console to DIR/console.log,
+# the QEMU PRU-ICSS's log of unmodelled accesses to DIR/qemu.log.
 # Returns the guest's exit status (or 124 on timeout, 125 without one).
 # Two disks carry the files: IN as a tar exactly its own size (busybox
 # tar reads an archive to the end of its device, which on one 256 MiB disk
 # for both directions cost the guest about 40 s per boot), and an empty
 # 256 MiB one the guest writes /out onto.
 boot() {
-	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
+	local dir=$1 in=$2 out=$3 bootkind=$4 indisk=$1/in.tar outdisk=$1/out.img rc
+	local board=(-M vexpress-a15)
+	[ "$bootkind" = board ] &&
+		board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log")
+	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then
 		tar -cf "$indisk" -C "$in" .
@@ -200,7 +266,7 @@ boot() {
 	# plain "set -e" here would turn it on in callers that turned it off.
 	local start=$(date +%s) errexit=${-//[^e]/}
 	set +e
-	timeout --foreground "$VM_TIMEOUT" qemu-system-arm "${machine[@]}" \
+	timeout --foreground "$VM_TIMEOUT" "$qemu" "${board[@]}" "${machine[@]}" \
 		-accel tcg,thread=multi -nographic -no-reboot \
 		-kernel "$kimage/boot/vmlinuz-$kver" -initrd "$dir/initrd" \
 		-dtb "$dir/dtb/prukit.dtb" \
@@ -231,7 +297,9 @@ boot() {
 	return "$rc"
 }
 
-# kernel_log_clean DIR OUT - fail on any splat in the console or dmesg.
+# kernel_log_clean DIR OUT - fail on any splat in the console or dmesg, and
+# on anything the QEMU PRU-ICSS logged (an access it does not model, a PRU
+# the simulator stopped: DIR/qemu.log).
 kernel_log_clean() {
 	local dir=$1 out=$2 hits
 	local log
@@ -252,12 +320,21 @@ kernel_log_clean() {
 		echo "FAIL: $kver: kernel log clean (oops/BUG/WARN/lockdep/hung task/page corruption)"
 		return 1
 	fi
+	# (QEMU's own boards log there too: vexpress probes devices it lacks)
+	hits=$(grep '^am335x-pruss: ' "$dir/qemu.log" 2>/dev/null || true)
+	if [ -n "$hits" ]; then
+		sort <<<"$hits" | uniq -c | sort -rn | head -n 20
+		echo "FAIL: $kver: kernel log clean, but the PRU-ICSS model logged $(wc -l <<<"$hits") line(s) ($dir/qemu.log)"
+		return 1
+	fi
 	echo "PASS: $kver: kernel log clean (no oops, BUG, WARN, lockdep, hung task or page corruption)"
 }
 
-# Loaded in this order at boot: the rpmsg transport (no udev loads it), then
-# prukit's modules and the test consumer.
-PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-virtio_rpmsg_bus rpmsg_pru pru_sim pru_test_consumer}
+# Loaded in this order at boot (no udev loads them).  The board path: the
+# kernel's PRU drivers, the simulator's test port and the test consumer.
+# pru_sim: the rpmsg transport, prukit's modules and the test consumer.
+PRUKIT_VM_MODULES_BOARD=${PRUKIT_VM_MODULES_BOARD:-pruss irq_pruss_intc pru_rproc prusim_port pru_test_consumer}
+PRUKIT_VM_MODULES_SIM=${PRUKIT_VM_MODULES_SIM:-virtio_rpmsg_bus rpmsg_pru pru_sim pru_test_consumer}
 
 cmd=${1:-}
 shift || true
@@ -269,17 +346,20 @@ run)
 	[ -z "$in" ] || in=$(cd "$in" && pwd)
 	out=${4:-$PRUKIT_TOP/out/vmrun}
 	[ -f "$script" ] || die "no such script: $script"
-	build_prukit "$series"
+	runboot=${PRUKIT_VM_BOOT:-board}
+	case $runboot in board | pru_sim) ;; *) die "PRUKIT_VM_BOOT is board or pru_sim" ;; esac
+	build_prukit "$series" "$runboot"
 	dir=$PRUKIT_TOP/out/vm/$kver/run
+	[ "$runboot" = board ] || dir=$PRUKIT_TOP/out/vm/$kver-$runboot/run
 	mkdir -p "$dir"
-	make_dtb "$dir/dtb"
-	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")"
+	make_dtb "$dir/dtb" "$runboot"
+	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")" "$runboot"
 	set +e
-	boot "$dir" "$in" "$out" >&2
+	boot "$dir" "$in" "$out" "$runboot" >&2
 	rc=$?
 	kernel_log_clean "$dir" "$out" >&2 || rc=1
 	set -e
-	msg "vmrun: $kver, script exit status $rc, $(cat "$dir/seconds") s; /out in $out"
+	msg "vmrun: $kver ($runboot), script exit status $rc, $(cat "$dir/seconds") s; /out in $out"
 	exit "$rc"
 	;;
 test)
@@ -292,22 +372,45 @@ test)
 		tests=$(awk '{ print $1 }' <<<"$cases" | paste -sd' ' -)
 	fi
 	[ -n "$tests" ] || die "no VM tests in tests/vm/cases or drivers/*/tests/vm/cases"
-	# Every kernel's builds, device tree and initrd first, one at a time
+	# Which boot each test needs
+	board_tests=
+	sim_tests=
+	for t in $tests; do
+		path=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
+		[ -n "$path" ] || die "no VM test $t"
+		if [ "$(case_boot "$path")" = pru_sim ]; then
+			sim_tests="$sim_tests $t"
+		else
+			board_tests="$board_tests $t"
+		fi
+	done
+	board_tests=${board_tests# }
+	sim_tests=${sim_tests# }
+	# Every kernel's builds, device trees and initrds first, one at a time
 	# (builds use every CPU), then the boots, VM_JOBS at once, each into
-	# its out/vm/<kernel>/results; then, kernel by kernel, the host halves
+	# its directory's results; then, kernel by kernel, the host halves
 	# and the results.
 	declare -A kver_of kimage_of
+	boots=()
 	for series in $kvers; do
-		build_prukit "$series"
-		kver_of[$series]=$kver
-		kimage_of[$series]=$kimage
-		dir=$PRUKIT_TOP/out/vm/$kver
-		mkdir -p "$dir"
-		make_dtb "$dir/dtb"
-		make_initrd "$dir" test "$tests"
+		for b in board pru_sim; do
+			if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; fi
+			[ -n "$bt" ] || continue
+			build_prukit "$series" "$b"
+			kver_of[$series]=$kver
+			kimage_of[$series]=$kimage
+			dir=$PRUKIT_TOP/out/vm/$kver
+			[ "$b" = board ] || dir=$dir-$b
+			mkdir -p "$dir"
+			make_dtb "$dir/dtb" "$b"
+			make_initrd "$dir" test "$bt" "$b"
+			boots+=("$series:$b")
+		done
 	done
 	running=0
-	for series in $kvers; do
+	for sb in "${boots[@]}"; do
+		series=${sb%%:*}
+		b=${sb#*:}
 		if [ "$running" -ge "$VM_JOBS" ]; then
 			wait -n || true
 			running=$((running - 1))
@@ -315,11 +418,12 @@ test)
 		kver=${kver_of[$series]}
 		kimage=${kimage_of[$series]}
 		dir=$PRUKIT_TOP/out/vm/$kver
-		msg "vmtest: booting $kver"
+		[ "$b" = board ] || dir=$dir-$b
+		msg "vmtest: booting $kver ($b)"
 		rm -f "$dir/results" "$dir/seconds"
 		(
 			set +e
-			boot "$dir" "" "$dir/out" >"$dir/results"
+			boot "$dir" "" "$dir/out" "$b" >"$dir/results"
 			kernel_log_clean "$dir" "$dir/out" >>"$dir/results"
 			exit 0
 		) &
@@ -328,9 +432,13 @@ test)
 	wait
 	total_p=0
 	total_f=0
-	for series in $kvers; do
+	for sb in "${boots[@]}"; do
+		series=${sb%%:*}
+		b=${sb#*:}
 		kver=${kver_of[$series]}
 		dir=$PRUKIT_TOP/out/vm/$kver
+		label=$series
+		if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; dir=$dir-$b; label=$series/$b; fi
 		res=$dir/results
 		# kernel_log_clean's line comes last: without it the boot's
 		# results are not all there.
@@ -338,7 +446,7 @@ test)
 			echo "FAIL: $kver: the boot left no complete results (see $dir/console.log)" >>"$res"
 		# Host halves of tests, on what the guest brought back: each beside
 		# its case's cases/ directory, in host/ (vm_host_half).
-		for t in $tests; do
+		for t in $bt; do
 			host=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
 			[ -n "$host" ] || continue
 			host=$(vm_host_half "$host")
@@ -352,10 +460,10 @@ test)
 				echo "FAIL: $t: no artifacts came back for its host half" >>"$res"
 			fi
 		done
-		grep -E '^(PASS|FAIL):' "$res" | sed "s/^\(PASS\|FAIL\): /\1: $series: /"
+		grep -E '^(PASS|FAIL):' "$res" | sed "s|^\(PASS\|FAIL\): |\1: $label: |"
 		p=$(grep -c '^PASS:' "$res" || true)
 		f=$(grep -c '^FAIL:' "$res" || true)
-		echo "$series ($kver): $p passed, $f failed, $(cat "$dir/seconds" 2>/dev/null || echo '?') s (boot and tests)"
+		echo "$label ($kver): $p passed, $f failed, $(cat "$dir/seconds" 2>/dev/null || echo '?') s (boot and tests)"
 		total_p=$((total_p + p))
 		total_f=$((total_f + f))
 	done

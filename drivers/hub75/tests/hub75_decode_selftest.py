@@ -7,7 +7,7 @@ independent of any firmware: one frame is row after row, each row its 4 bit
 planes (binary code modulation, LSB first, plane p lit 10 << p cycles), each
 plane shifted column by column (data, then clk high, then clk low), latched
 (lat high then low), addressed, and lit (oe low).  Only changes are
-recorded, like pru_sim's trace.  The decoder must give every pixel's level
+recorded, like the simulator's trace.  The decoder must give every pixel's level
 back exactly, from the event list and from a binary trace file (nonzero
 origin), and must see the faults the generator can put in.
 

@@ -28,7 +28,7 @@ CTRL_H = os.path.join(TOP, "include/prukit/pru_ctrl.h")
 DDR = 0x80000000
 FRAME_AT = DDR + 0x100          # where the frame is put (bus address)
 # GPIO bank b's edges land 17 + 1 + 8 * b cycles after the R30 edge with
-# pru_sim's default gpio_write_latency 17 and gpio_write_interval 8
+# prusim's default gpio_write_latency 17 and gpio_write_interval 8
 # (ws281x_send.S); measured, compared with this.
 GPIO_OFFSET = [18 + 8 * b for b in range(4)]
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-only
-"""Read pru_sim's binary pin trace (sim/prusim_trace.h) in the guest."""
+"""Read the simulator's binary pin trace (sim/prusim_trace.h) in the guest."""
 import struct
 
 HDR = struct.Struct("<8sIIQQQQ")

@@ -29,22 +29,41 @@ done_testing() {
 	exit $vmtest_failed
 }
 
-# The simulated PRU-ICSS's debugfs directory.
+# The simulated PRU-ICSS's debugfs directory: the QEMU device's test port
+# on the board path (tests/kmod/prusim_port.c), pru_sim's on the pru_sim boot.
 sim_dir() {
 	local d
-	for d in /sys/kernel/debug/pru_sim/*/; do
+	for d in /sys/kernel/debug/prusim/ /sys/kernel/debug/pru_sim/*/; do
 		[ -e "$d/stats" ] && { echo "${d%/}"; return 0; }
 	done
 	return 1
 }
 
-# pru_rproc N - the remoteproc sysfs directory of simulated PRU N.
+# board_path - true if both PRU cores are bound to the kernel's own
+# pru-rproc driver (the board path) and pru_sim is not loaded.
+board_path() {
+	local c
+	for c in 4a334000.pru 4a338000.pru; do
+		[ "$(basename "$(readlink -f "/sys/bus/platform/devices/$c/driver")")" = pru-rproc ] ||
+			return 1
+	done
+	! grep -q "^pru_sim " /proc/modules
+}
+
+# check_board_path - the check every board-path test makes first
+check_board_path() {
+	check "PRU0 and PRU1 are bound to the kernel's pru-rproc; pru_sim is not loaded" board_path
+}
+
+# pru_rproc N - the remoteproc sysfs directory of PRU N (its device is
+# 4a334000.pru / 4a338000.pru on the board path, pru@34000 / pru@38000 under
+# pru_sim).
 pru_rproc() {
 	local iram r
 	case $1 in 0) iram=34000 ;; 1) iram=38000 ;; *) return 1 ;; esac
 	for r in /sys/class/remoteproc/remoteproc*; do
 		case $(readlink -f "$r/device") in
-		*pru@$iram) echo "$r"; return 0 ;;
+		*pru@$iram | */4a3$iram.pru) echo "$r"; return 0 ;;
 		esac
 	done
 	return 1

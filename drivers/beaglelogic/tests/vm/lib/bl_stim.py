@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-only
 """The beaglelogic tests' R31 stimulus, for the guest (which writes it to
-pru_sim's input/r31-1) and the host (which computes every sample expected).
+the test port's input/r31-1) and the host (which computes every sample expected).
 
 A new 16-bit value in every PRU cycle: the states of a maximal 16-bit
 Galois LFSR (taps 0xb400), PERIOD cycles long and repeated.  PERIOD is a
@@ -23,7 +23,7 @@ def values(period=PERIOD, seed=SEED):
 
 
 def text(vals):
-    """The stimulus in pru_sim's input format."""
+    """The stimulus in the simulator's input format."""
     lines = ["%d %d" % (i, v) for i, v in enumerate(vals)]
     lines.append("repeat %d" % len(vals))
     return "\n".join(lines) + "\n"
@@ -102,7 +102,7 @@ def serial_events():
 
 
 def serial_text():
-    """The serial stimulus in pru_sim's input format."""
+    """The serial stimulus in the simulator's input format."""
     _, changes = serial_events()
     return "".join("%d %d\n" % c for c in changes) + "repeat %d\n" % SERIAL_PERIOD
 

@@ -9,9 +9,9 @@ import os
 import struct
 import time
 
-from rpmsg import read_attr, write_attr
+from rpmsg import read_attr, sim_dir, write_attr
 
-SIM = glob.glob("/sys/kernel/debug/pru_sim/*/stats")[0].rsplit("/", 1)[0]
+SIM = sim_dir()
 DRV = "/sys/bus/platform/drivers/hub75"
 DEVS = "/sys/bus/platform/devices"
 
@@ -25,7 +25,7 @@ def sim_cycles():
 
 
 def wait_cycles(n, timeout=300):
-    """Until pru_sim has run N more cycles; False on a timeout."""
+    """Until the simulator has run N more cycles; False on a timeout."""
     start, t0 = sim_cycles(), time.monotonic()
     while sim_cycles() - start < n:
         if time.monotonic() - t0 > timeout:

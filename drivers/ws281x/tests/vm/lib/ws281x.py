@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-only
 """Guest helpers of the ws281x VM tests: which controller is bound, and our
-own decoder of WS281x strings in pru_sim's pin trace.
+own decoder of WS281x strings in the simulator's pin trace.
 
 The decoder takes a bit as 1 when its high time is nearer T1H than T0H,
 counts every high time that is neither exactly, and ends a frame at a low of
