@@ -16,7 +16,8 @@
  *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
  *               reaches the pin trace only through a pad muxed to it
  *   0x5f000000  prukit's test port: pin trace, input stimulus, statistics
- *               and timing knobs for tests inside the guest (a guest driver,
+ *               and a knob that freezes simulated time, for tests inside
+ *               the guest (registers: sim/prusim_port.h; a guest driver,
  *               prukit's tests/kmod/prusim_port.c, shows them in debugfs)
  *
  * Accesses to the rest of L4_WKUP, L4_PER and L4_FAST, and to registers of
@@ -31,6 +32,9 @@
  * the device lock; the thread runs a slice under the device lock only,
  * drops it between slices (and waits there while an MMIO handler wants it),
  * and takes the BQL, then the device lock, to change interrupt lines.
+ * The thread parks while the VM is stopped.
+ *
+ * Register values are handled as host integers: little-endian hosts only.
  *
  * Emulation policy (not a property of the board): while a host interrupt
  * towards the ARM is pending, or an event the ARM acknowledged is still
@@ -42,6 +46,7 @@
 
 #include "qemu/osdep.h"
 #include "qemu/atomic.h"
+#include "qemu/cutils.h"
 #include "qemu/log.h"
 #include "qemu/main-loop.h"
 #include "qemu/module.h"
@@ -56,13 +61,18 @@
 #include "hw/sysbus.h"
 #include "migration/vmstate.h"
 #include "qom/object.h"
+#include "sysemu/runstate.h"
 #include "trace.h"
 
 #include "hw/misc/am335x_pruss.h"
 #include "prusim/prusim.h"
+#include "prusim/prusim_port.h"
 #include "prusim/prusim_stim.h"
 #include "prusim/prusim_trace.h"
 #include "prusim/am335x_pins.h"
+
+QEMU_BUILD_BUG_MSG(HOST_BIG_ENDIAN,
+                   "am335x-pruss supports little-endian hosts only");
 
 OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 
@@ -95,29 +105,8 @@ static const struct {
 #define PORT_SIZE               0x1000
 #define PORT_BUF_BASE           0x5f800000
 #define PORT_BUF_SIZE           (8 << 20)
-#define PORT_ID                 0x4d535250      /* "PRSM" */
-#define PORT_VERSION            1
-
-/* Port registers */
-#define PORT_REG_ID             0x00
-#define PORT_REG_VERSION        0x04
-#define PORT_REG_CMD            0x08
-#define PORT_REG_STATUS         0x0c
-#define PORT_REG_LEN            0x10
-#define PORT_REG_BUFSIZE        0x14
-#define PORT_REG_HANDLE         0x18
-
-/* Port commands: CMD = op | file << 8 | handle << 16 */
-#define PORT_OP_LIST            1       /* -> "name mode kind" lines */
-#define PORT_OP_READ            2       /* file -> its content */
-#define PORT_OP_WRITE           3       /* file, LEN bytes -> (error text) */
-#define PORT_OP_OPEN            4       /* file (staged) -> HANDLE */
-#define PORT_OP_APPEND          5       /* handle, LEN bytes -> (error text) */
-#define PORT_OP_CLOSE           6       /* handle: install what was written */
-#define PORT_OP_DROP            7       /* handle: forget what was written */
-
 #define PORT_HANDLES            16
-#define STIM_MAX                (64 << 20)
+#define STIM_MAX                (64 << 20)  /* staged text, all handles */
 
 /* GPIO bank registers (SPRUH73 chapter 25) */
 #define GPIO_REVISION           0x000
@@ -158,7 +147,6 @@ static const struct {
 #define TRACE_LEN               (1u << 18)
 #define PAD_RESET               0x27    /* mode 7, pull-down, receiver on */
 #define PAD_MASK                0x7f
-#define KNOB_MAX_US             1000000
 #define UNIMP_LAST_LEN          160
 
 typedef struct PrussInput {
@@ -208,7 +196,8 @@ struct AM335xPrussState {
     bool quit;
     bool runnable;                  /* the last slice did not end idle */
     bool irq_dirty;                 /* a host interrupt line may have changed */
-    bool ocp_pause;
+    bool vm_running;
+    VMChangeStateEntry *vmstate_entry;
 
     struct prusim *s;
     bool stopped_reported[PRUSIM_NUM_CORES];
@@ -259,15 +248,13 @@ struct AM335xPrussState {
     uint64_t unimp;
     char unimp_last[UNIMP_LAST_LEN];
 
-    /* knobs (microseconds; freeze: 0 or 1) */
-    uint32_t ocp_write_pause_us;
-    uint32_t stop_delay_us;
+    /* knob: 0 or 1 */
     uint32_t freeze;
 };
 
 static int64_t now_ns(void)
 {
-    return get_clock();
+    return qemu_clock_get_ns(QEMU_CLOCK_REALTIME);
 }
 
 /* ------------------------------------------------------------------ */
@@ -474,7 +461,9 @@ static bool ocp_is_ram(uint32_t addr, unsigned int len, bool write)
 /*
  * OCP master port: the AM335x EMIF window 0x80000000..0xbfffffff, where the
  * guest's RAM is (as an AM335x's DDR is).  Only RAM: a device behind the
- * port would need the BQL, which this lock must not wait for.
+ * port would need the BQL, which this lock must not wait for.  The check
+ * and the access translate the address apart; that is safe because the
+ * board maps its RAM once and never moves it.
  */
 static int cb_ocp(AM335xPrussState *p, u32 addr, void *buf, unsigned int len,
                   bool write)
@@ -498,11 +487,6 @@ static int cb_ocp(AM335xPrussState *p, u32 addr, void *buf, unsigned int len,
         snprintf(p->ocp_err, sizeof(p->ocp_err),
                  "OCP %s at 0x%08x failed", what, addr);
         goto fail;
-    }
-    if (write && p->ocp_write_pause_us) {
-        /* knob: let the ARM run before the next store */
-        p->ocp_pause = true;
-        prusim_yield(p->s);
     }
     return 0;
 fail:
@@ -673,6 +657,9 @@ static void intc_write_seen(AM335xPrussState *p, uint32_t off, uint32_t val)
         /* the delivery's latency, from the R31 strobe to this ack */
         prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
         prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
+        if ((cmr[ev] & 0xf) >= PRUSIM_NUM_CHANNELS) {
+            break;
+        }
         host = hmr[cmr[ev] & 0xf] & 0xf;
         if (host < PRUSIM_NUM_HOSTS && p->strobe[host] &&
             p->s->now >= p->strobe[host]) {
@@ -763,20 +750,6 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
         prusim_get_status(p->s, i, &st);
         was_running[i] = st.state == PRUSIM_RUNNING ||
                          st.state == PRUSIM_SLEEPING;
-        /*
-         * Knob stop_delay_us: a store that disables a running core
-         * reaches it that much later, as if the stopping task had been
-         * preempted right before it; the core runs on meanwhile.
-         */
-        if (addr == ICSS_CTRL(i) && size == 4 && was_running[i] &&
-            !(v & ICSS_CTRL_EN) && p->stop_delay_us) {
-            uint32_t us = p->stop_delay_us;
-
-            qemu_cond_signal(&p->turn);
-            qemu_mutex_unlock(&p->lock);
-            g_usleep(us);
-            pruss_lock(p);
-        }
     }
     if (addr >= ICSS_INTC && addr < ICSS_INTC + 0x2000 && size == 4) {
         intc_write_seen(p, addr, v);
@@ -1048,8 +1021,6 @@ enum port_file {
     PF_TRACE,
     PF_STATS,
     PF_PADS,
-    PF_OCP_WRITE_PAUSE_US,
-    PF_STOP_DELAY_US,
     PF_FREEZE,
     PF_INPUT,               /* PF_INPUT + port: input/<name> */
     PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
@@ -1059,8 +1030,6 @@ static const char *const port_file_name[PF_NUM] = {
     [PF_TRACE] = "trace",
     [PF_STATS] = "stats",
     [PF_PADS] = "pads",
-    [PF_OCP_WRITE_PAUSE_US] = "ocp_write_pause_us",
-    [PF_STOP_DELAY_US] = "stop_delay_us",
     [PF_FREEZE] = "freeze",
     [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
     [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
@@ -1245,12 +1214,6 @@ static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
     case PF_PADS:
         *len = port_pads(p);
         return 0;
-    case PF_OCP_WRITE_PAUSE_US:
-        *len = port_reply(p, "%u\n", p->ocp_write_pause_us);
-        return 0;
-    case PF_STOP_DELAY_US:
-        *len = port_reply(p, "%u\n", p->stop_delay_us);
-        return 0;
     case PF_FREEZE:
         *len = port_reply(p, "%u\n", p->freeze);
         return 0;
@@ -1276,7 +1239,7 @@ static char *port_text(AM335xPrussState *p, uint32_t len, char *dst,
 
 static int port_write_trace(AM335xPrussState *p, uint32_t len, uint32_t *reply)
 {
-    char text[64], *arg, *end;
+    char text[64], *arg;
     uint64_t window = 0;
 
     arg = port_text(p, len, text, sizeof(text));
@@ -1287,9 +1250,8 @@ static int port_write_trace(AM335xPrussState *p, uint32_t len, uint32_t *reply)
     }
     arg = g_strchug(arg + 5);
     if (*arg) {
-        errno = 0;
-        window = g_ascii_strtoull(arg, &end, 0);
-        if (errno || *end || !window || arg[0] == '-') {
+        if (arg[0] == '-' || qemu_strtou64(arg, NULL, 0, &window) ||
+            !window) {
             *reply = port_reply(p, "trace: bad window \"%s\"", arg);
             return -EINVAL;
         }
@@ -1297,28 +1259,28 @@ static int port_write_trace(AM335xPrussState *p, uint32_t len, uint32_t *reply)
     p->trace_head = 0;
     p->trace_count = 0;
     p->trace_dropped = 0;
-    p->trace_until = window ? p->s->now + window : 0;
+    p->trace_until = !window ? 0 :
+                     window > UINT64_MAX - p->s->now ? UINT64_MAX :
+                     p->s->now + window;
     return 0;
 }
 
 /* "0xOFFSET 0xVALUE": set a pad as config-pin does (value at most 0x7f) */
 static int port_write_pads(AM335xPrussState *p, uint32_t len, uint32_t *reply)
 {
-    char text[64], *arg, *end;
+    const char *end;
+    char text[64], *arg;
     uint64_t off, val;
 
     arg = port_text(p, len, text, sizeof(text));
     if (!arg) {
         goto bad;
     }
-    errno = 0;
-    off = g_ascii_strtoull(arg, &end, 0);
-    if (errno || end == arg || !g_ascii_isspace(*end)) {
+    if (qemu_strtou64(arg, &end, 0, &off) || !g_ascii_isspace(*end)) {
         goto bad;
     }
-    arg = g_strchug(end);
-    val = g_ascii_strtoull(arg, &end, 0);
-    if (errno || end == arg || *end || off < 0x800 ||
+    arg = g_strchug(arg + (end - arg));
+    if (arg[0] == '-' || qemu_strtou64(arg, NULL, 0, &val) || off < 0x800 ||
         off >= 0x800 + PADS_SIZE || off & 3 || val > PAD_MASK) {
         goto bad;
     }
@@ -1337,13 +1299,11 @@ bad:
 static int port_write_knob(AM335xPrussState *p, uint32_t *knob, uint32_t max,
                            uint32_t len, uint32_t *reply)
 {
-    char text[32], *arg, *end;
+    char text[32], *arg;
     uint64_t v;
 
     arg = port_text(p, len, text, sizeof(text));
-    errno = 0;
-    v = arg ? g_ascii_strtoull(arg, &end, 0) : 0;
-    if (!arg || errno || end == arg || *end || arg[0] == '-') {
+    if (!arg || arg[0] == '-' || qemu_strtou64(arg, NULL, 0, &v)) {
         *reply = port_reply(p, "a number from 0 to %u", max);
         return -EINVAL;
     }
@@ -1363,11 +1323,6 @@ static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
         return port_write_trace(p, len, reply);
     case PF_PADS:
         return port_write_pads(p, len, reply);
-    case PF_OCP_WRITE_PAUSE_US:
-        return port_write_knob(p, &p->ocp_write_pause_us, KNOB_MAX_US, len,
-                               reply);
-    case PF_STOP_DELAY_US:
-        return port_write_knob(p, &p->stop_delay_us, KNOB_MAX_US, len, reply);
     case PF_FREEZE:
         return port_write_knob(p, &p->freeze, 1, len, reply);
     }
@@ -1379,10 +1334,16 @@ static int port_append(AM335xPrussState *p, PrussStage *st, uint32_t len,
                        uint32_t *reply)
 {
     char err[PRUSIM_REASON_LEN];
-    size_t end;
+    size_t end, staged = 0;
+    unsigned int i;
     int ret;
 
-    if (len > STIM_MAX - st->len) {
+    for (i = 0; i < PORT_HANDLES; i++) {
+        staged += p->stage[i].len;
+    }
+    if (len > STIM_MAX - staged) {
+        *reply = port_reply(p, "input %u: more than %u MiB of text staged",
+                            st->port, STIM_MAX >> 20);
         return -EFBIG;
     }
     if (st->len + len > st->cap) {
@@ -1455,20 +1416,20 @@ static void port_command(AM335xPrussState *p, uint32_t cmd)
     unsigned int i;
 
     switch (op) {
-    case PORT_OP_LIST:
+    case PRUSIM_TEST_PORT_OP_LIST:
         for (i = 0; i < PF_NUM; i++) {
             port_add(p, &reply, "%s %s %s\n", port_file_name[i],
                      i == PF_STATS ? "0400" : "0600",
                      i >= PF_INPUT ? "staged" : "snapshot");
         }
         break;
-    case PORT_OP_READ:
+    case PRUSIM_TEST_PORT_OP_READ:
         status = port_read(p, file, &reply);
         break;
-    case PORT_OP_WRITE:
+    case PRUSIM_TEST_PORT_OP_WRITE:
         status = file >= PF_INPUT ? -EINVAL : port_write(p, file, len, &reply);
         break;
-    case PORT_OP_OPEN:
+    case PRUSIM_TEST_PORT_OP_OPEN:
         status = -EMFILE;
         if (file < PF_INPUT || file >= PF_NUM) {
             status = -EINVAL;
@@ -1484,16 +1445,16 @@ static void port_command(AM335xPrussState *p, uint32_t cmd)
             }
         }
         break;
-    case PORT_OP_APPEND:
+    case PRUSIM_TEST_PORT_OP_APPEND:
         status = st && st->used ? port_append(p, st, len, &reply) : -EBADF;
         break;
-    case PORT_OP_CLOSE:
-    case PORT_OP_DROP:
+    case PRUSIM_TEST_PORT_OP_CLOSE:
+    case PRUSIM_TEST_PORT_OP_DROP:
         if (!st || !st->used) {
             status = -EBADF;
             break;
         }
-        if (op == PORT_OP_CLOSE && st->len) {
+        if (op == PRUSIM_TEST_PORT_OP_CLOSE && st->len) {
             status = port_install(p, st, &reply);
         }
         stage_free(st);
@@ -1512,17 +1473,17 @@ static uint64_t port_read_reg(void *opaque, hwaddr off, unsigned int size)
     AM335xPrussState *p = opaque;
 
     switch (off) {
-    case PORT_REG_ID:
-        return PORT_ID;
-    case PORT_REG_VERSION:
-        return PORT_VERSION;
-    case PORT_REG_STATUS:
+    case PRUSIM_TEST_PORT_REG_ID:
+        return PRUSIM_TEST_PORT_ID;
+    case PRUSIM_TEST_PORT_REG_VERSION:
+        return PRUSIM_TEST_PORT_VERSION;
+    case PRUSIM_TEST_PORT_REG_STATUS:
         return p->port_status;
-    case PORT_REG_LEN:
+    case PRUSIM_TEST_PORT_REG_LEN:
         return p->port_len;
-    case PORT_REG_BUFSIZE:
+    case PRUSIM_TEST_PORT_REG_BUFSIZE:
         return PORT_BUF_SIZE;
-    case PORT_REG_HANDLE:
+    case PRUSIM_TEST_PORT_REG_HANDLE:
         return p->port_handle;
     }
     qemu_log_mask(LOG_GUEST_ERROR,
@@ -1536,10 +1497,10 @@ static void port_write_reg(void *opaque, hwaddr off, uint64_t val,
     AM335xPrussState *p = opaque;
 
     switch (off) {
-    case PORT_REG_LEN:
+    case PRUSIM_TEST_PORT_REG_LEN:
         p->port_len = val;
         return;
-    case PORT_REG_CMD:
+    case PRUSIM_TEST_PORT_REG_CMD:
         pruss_lock(p);
         port_command(p, val);
         pruss_update_irqs(p);
@@ -1587,14 +1548,18 @@ static void *pruss_thread(void *opaque)
 {
     AM335xPrussState *p = opaque;
 
+    /* the OCP port's RAM accesses are RCU readers of the memory map */
+    rcu_register_thread();
     qemu_mutex_lock(&p->lock);
     while (!p->quit) {
         int wait_ms = 0;
-        uint32_t pause_us;
         int64_t t0;
 
-        /* knob: simulated time stands still, the registers still answer */
-        if (p->freeze) {
+        /*
+         * A stopped VM, or the knob: simulated time stands still, the
+         * registers still answer
+         */
+        if (!p->vm_running || p->freeze) {
             qemu_cond_wait(&p->wake, &p->lock);
             continue;
         }
@@ -1622,27 +1587,31 @@ static void *pruss_thread(void *opaque)
          */
         p->runnable = !p->s->waiting || inputs_pending(p);
         report_stops(p);
-        pause_us = p->ocp_pause ? p->ocp_write_pause_us : 0;
-        p->ocp_pause = false;
-        if (p->irq_dirty || pause_us) {
-            bool dirty = p->irq_dirty;
-
+        if (p->irq_dirty) {
             qemu_mutex_unlock(&p->lock);
-            if (pause_us) {
-                g_usleep(pause_us);
-            }
-            if (dirty) {
-                qemu_mutex_lock_iothread();
-                qemu_mutex_lock(&p->lock);
-                pruss_update_irqs(p);
-                qemu_mutex_unlock_iothread();
-            } else {
-                qemu_mutex_lock(&p->lock);
-            }
+            qemu_mutex_lock_iothread();
+            qemu_mutex_lock(&p->lock);
+            pruss_update_irqs(p);
+            qemu_mutex_unlock_iothread();
         }
     }
     qemu_mutex_unlock(&p->lock);
+    rcu_unregister_thread();
     return NULL;
+}
+
+/* BQL held */
+static void pruss_vm_state_change(void *opaque, bool running, RunState state)
+{
+    AM335xPrussState *p = opaque;
+
+    pruss_lock(p);
+    p->vm_running = running;
+    if (running && p->hold_since) {
+        /* a hold's cap counts host time the VM ran */
+        p->hold_since = now_ns();
+    }
+    pruss_unlock(p, true);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1681,6 +1650,8 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->expired_lines = 0;
     p->expired_events = 0;
     p->hold_since = 0;
+    memset(p->strobe, 0, sizeof(p->strobe));
+    memset(p->stopped_reported, 0, sizeof(p->stopped_reported));
     p->freeze = 0;
     p->runnable = false;
     p->irq_dirty = true;
@@ -1690,10 +1661,10 @@ static void am335x_pruss_reset(DeviceState *dev)
 {
     AM335xPrussState *p = AM335X_PRUSS(dev);
 
-    qemu_mutex_lock(&p->lock);
+    pruss_lock(p);
     pruss_reset_state(p);
     pruss_update_irqs(p);
-    qemu_mutex_unlock(&p->lock);
+    pruss_unlock(p, true);
 }
 
 static void am335x_pruss_realize(DeviceState *dev, Error **errp)
@@ -1707,8 +1678,6 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
         error_setg(errp, "slice-cycles must be at least 1");
         return;
     }
-    p->s = g_malloc0(sizeof(*p->s));
-    p->trace = g_new0(struct prusim_trace_rec, TRACE_LEN);
 
     memory_region_init_io(&p->pruss_mr, OBJECT(p), &pruss_ops, p,
                           "am335x-pruss.icss", PRUSS_SIZE);
@@ -1749,12 +1718,40 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
         sysbus_init_irq(sbd, &p->gpio_irq[i]);
     }
 
+    p->s = g_malloc0(sizeof(*p->s));
+    p->trace = g_new0(struct prusim_trace_rec, TRACE_LEN);
     qemu_mutex_init(&p->lock);
     qemu_cond_init(&p->wake);
     qemu_cond_init(&p->turn);
     pruss_reset_state(p);
+    p->vm_running = runstate_is_running();
+    p->vmstate_entry = qemu_add_vm_change_state_handler(pruss_vm_state_change,
+                                                        p);
     qemu_thread_create(&p->thread, "am335x-pruss", pruss_thread, p,
                        QEMU_THREAD_JOINABLE);
+}
+
+static void am335x_pruss_unrealize(DeviceState *dev)
+{
+    AM335xPrussState *p = AM335X_PRUSS(dev);
+    unsigned int i;
+
+    qemu_del_vm_change_state_handler(p->vmstate_entry);
+    pruss_lock(p);
+    p->quit = true;
+    pruss_unlock(p, true);
+    qemu_thread_join(&p->thread);
+    for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
+        stim_free(&p->input[i].stim);
+    }
+    for (i = 0; i < PORT_HANDLES; i++) {
+        stage_free(&p->stage[i]);
+    }
+    g_free(p->trace);
+    g_free(p->s);
+    qemu_cond_destroy(&p->turn);
+    qemu_cond_destroy(&p->wake);
+    qemu_mutex_destroy(&p->lock);
 }
 
 static Property am335x_pruss_props[] = {
@@ -1776,6 +1773,7 @@ static void am335x_pruss_class_init(ObjectClass *klass, void *data)
     DeviceClass *dc = DEVICE_CLASS(klass);
 
     dc->realize = am335x_pruss_realize;
+    dc->unrealize = am335x_pruss_unrealize;
     dc->reset = am335x_pruss_reset;
     dc->vmsd = &vmstate_am335x_pruss;
     dc->desc = "AM335x PRU-ICSS (prukit's prusim), GPIO banks and pads";
@@ -1789,7 +1787,6 @@ static const TypeInfo am335x_pruss_info = {
     .instance_size = sizeof(AM335xPrussState),
     .class_init = am335x_pruss_class_init,
 };
-
 
 DeviceState *am335x_pruss_create(qemu_irq *host_irq, qemu_irq *gpio_irq)
 {

@@ -34,24 +34,7 @@
 #include <linux/string.h>
 #include <linux/uaccess.h>
 
-#define PRUSIM_PORT_ID		0x4d535250	/* "PRSM" */
-#define PRUSIM_PORT_VERSION	1
-
-#define PORT_REG_ID		0x00
-#define PORT_REG_VERSION	0x04
-#define PORT_REG_CMD		0x08
-#define PORT_REG_STATUS		0x0c
-#define PORT_REG_LEN		0x10
-#define PORT_REG_BUFSIZE	0x14
-#define PORT_REG_HANDLE		0x18
-
-#define PORT_OP_LIST		1
-#define PORT_OP_READ		2
-#define PORT_OP_WRITE		3
-#define PORT_OP_OPEN		4
-#define PORT_OP_APPEND		5
-#define PORT_OP_CLOSE		6
-#define PORT_OP_DROP		7
+#include "prusim_port.h"
 
 #define PRUSIM_PORT_FILES	32
 
@@ -115,11 +98,13 @@ static int prusim_port_cmd(struct prusim_port *pp, u32 op, u32 index, u32 handle
 	u32 status;
 
 	lockdep_assert_held(&pp->lock);
-	writel(len, pp->regs + PORT_REG_LEN);
-	writel(op | index << 8 | handle << 16, pp->regs + PORT_REG_CMD);
-	status = readl(pp->regs + PORT_REG_STATUS);
-	*reply_len = min(readl(pp->regs + PORT_REG_LEN), pp->buf_size);
-	return status ? -(int)status : 0;
+	writel(len, pp->regs + PRUSIM_TEST_PORT_REG_LEN);
+	writel(PRUSIM_TEST_PORT_CMD(op, index, handle), pp->regs + PRUSIM_TEST_PORT_REG_CMD);
+	status = readl(pp->regs + PRUSIM_TEST_PORT_REG_STATUS);
+	*reply_len = min(readl(pp->regs + PRUSIM_TEST_PORT_REG_LEN), pp->buf_size);
+	if (status > MAX_ERRNO)
+		return -EPROTO;
+	return -(int)status;
 }
 
 /* The device's reason for a refused command (it names the file and line) */
@@ -148,7 +133,7 @@ static int prusim_port_open(struct inode *inode, struct file *file)
 
 	mutex_lock(&pp->lock);
 	if (file->f_mode & FMODE_READ) {
-		ret = prusim_port_cmd(pp, PORT_OP_READ, f->index, 0, 0, &len);
+		ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_READ, f->index, 0, 0, &len);
 		if (!ret) {
 			o->data = kvmalloc(len ?: 1, GFP_KERNEL);
 			if (o->data) {
@@ -160,9 +145,16 @@ static int prusim_port_open(struct inode *inode, struct file *file)
 		}
 	}
 	if (!ret && f->staged && (file->f_mode & FMODE_WRITE)) {
-		ret = prusim_port_cmd(pp, PORT_OP_OPEN, f->index, 0, 0, &len);
-		if (!ret)
-			o->handle = readl(pp->regs + PORT_REG_HANDLE);
+		ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_OPEN, f->index, 0, 0, &len);
+		if (!ret) {
+			u32 handle = readl(pp->regs + PRUSIM_TEST_PORT_REG_HANDLE);
+
+			/* CMD carries 16 bits of it */
+			if (handle > U16_MAX)
+				ret = -EPROTO;
+			else
+				o->handle = handle;
+		}
 	}
 	mutex_unlock(&pp->lock);
 
@@ -199,6 +191,8 @@ static ssize_t prusim_port_write(struct file *file, const char __user *ubuf, siz
 		return -EINVAL;
 	if (f->staged && o->handle < 0)
 		return -EBADF;
+	if (!count)
+		return 0;
 
 	mutex_lock(&pp->lock);
 	do {
@@ -209,9 +203,11 @@ static ssize_t prusim_port_write(struct file *file, const char __user *ubuf, siz
 			break;
 		}
 		if (f->staged)
-			ret = prusim_port_cmd(pp, PORT_OP_APPEND, 0, o->handle, n, &reply);
+			ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_APPEND, 0, o->handle, n,
+					      &reply);
 		else
-			ret = prusim_port_cmd(pp, PORT_OP_WRITE, f->index, 0, n, &reply);
+			ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_WRITE, f->index, 0, n,
+					      &reply);
 		if (ret) {
 			prusim_port_log_error(pp, f, ret, reply);
 			break;
@@ -226,8 +222,6 @@ static ssize_t prusim_port_write(struct file *file, const char __user *ubuf, siz
 static int prusim_port_release(struct inode *inode, struct file *file)
 {
 	struct prusim_port_open *o = file->private_data;
-	struct prusim_port_file *f = o->file;
-	struct prusim_port *pp = f->port;
 	struct dentry *dentry = file->f_path.dentry;
 	u32 reply;
 	int ret;
@@ -235,11 +229,14 @@ static int prusim_port_release(struct inode *inode, struct file *file)
 	/*
 	 * A staged file takes effect now.  debugfs calls release even after
 	 * the files were removed (the port was unbound with this file open):
-	 * then the port is gone and the text with it.
+	 * then the port is gone, @o->file with it, and the text too.
 	 */
 	if (o->handle >= 0 && !debugfs_file_get(dentry)) {
+		struct prusim_port_file *f = o->file;
+		struct prusim_port *pp = f->port;
+
 		mutex_lock(&pp->lock);
-		ret = prusim_port_cmd(pp, PORT_OP_CLOSE, 0, o->handle, 0, &reply);
+		ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_CLOSE, 0, o->handle, 0, &reply);
 		if (ret)
 			prusim_port_log_error(pp, f, ret, reply);
 		mutex_unlock(&pp->lock);
@@ -262,13 +259,13 @@ static const struct file_operations prusim_port_fops = {
 /* The device's file list: "name mode kind" lines */
 static int prusim_port_files(struct prusim_port *pp)
 {
-	char *list, *line, *next;
+	char *list, *line, *next, subname[48] = "";
 	struct dentry *sub = NULL;
 	u32 len;
 	int ret;
 
 	mutex_lock(&pp->lock);
-	ret = prusim_port_cmd(pp, PORT_OP_LIST, 0, 0, 0, &len);
+	ret = prusim_port_cmd(pp, PRUSIM_TEST_PORT_OP_LIST, 0, 0, 0, &len);
 	list = ret ? NULL : kmemdup_nul(pp->buf, len, GFP_KERNEL);
 	mutex_unlock(&pp->lock);
 	if (ret)
@@ -297,8 +294,17 @@ static int prusim_port_files(struct prusim_port *pp)
 		if (base) {
 			/* one level of directories ("input/r31-0") */
 			*base++ = 0;
-			if (!sub || strcmp(sub->d_name.name, name))
+			if (!sub || strcmp(subname, name)) {
+				/* the device lists a directory's files together */
 				sub = debugfs_create_dir(name, pp->dir);
+				if (IS_ERR(sub)) {
+					ret = dev_err_probe(pp->dev, PTR_ERR(sub),
+							    "cannot create debugfs prusim/%s\n",
+							    name);
+					break;
+				}
+				strscpy(subname, name, sizeof(subname));
+			}
 			dir = sub;
 		} else {
 			base = name;
@@ -333,22 +339,28 @@ static int prusim_port_probe(struct platform_device *pdev)
 	pp->regs = devm_platform_ioremap_resource_byname(pdev, "regs");
 	if (IS_ERR(pp->regs))
 		return PTR_ERR(pp->regs);
-	id = readl(pp->regs + PORT_REG_ID);
-	version = readl(pp->regs + PORT_REG_VERSION);
-	if (id != PRUSIM_PORT_ID || version != PRUSIM_PORT_VERSION)
+	id = readl(pp->regs + PRUSIM_TEST_PORT_REG_ID);
+	version = readl(pp->regs + PRUSIM_TEST_PORT_REG_VERSION);
+	if (id != PRUSIM_TEST_PORT_ID || version != PRUSIM_TEST_PORT_VERSION)
 		return dev_err_probe(dev, -ENODEV, "no test port here (id 0x%08x version %u)\n",
 				     id, version);
 
 	res = platform_get_resource_byname(pdev, IORESOURCE_MEM, "buf");
 	if (!res)
 		return dev_err_probe(dev, -EINVAL, "no \"buf\" region\n");
-	pp->buf_size = min_t(u64, resource_size(res), readl(pp->regs + PORT_REG_BUFSIZE));
+	pp->buf_size = min_t(u64, resource_size(res),
+			     readl(pp->regs + PRUSIM_TEST_PORT_REG_BUFSIZE));
+	if (!pp->buf_size)
+		return dev_err_probe(dev, -EPROTO, "the port has no buffer\n");
 	/* plain memory inside the device: mapped cacheable, copied with memcpy */
 	pp->buf = devm_memremap(dev, res->start, pp->buf_size, MEMREMAP_WB);
 	if (IS_ERR(pp->buf))
 		return dev_err_probe(dev, PTR_ERR(pp->buf), "cannot map the buffer\n");
 
 	pp->dir = debugfs_create_dir("prusim", NULL);
+	if (IS_ERR(pp->dir))
+		return dev_err_probe(dev, PTR_ERR(pp->dir),
+				     "cannot create debugfs prusim/ (debugfs off, or a second port?)\n");
 	ret = devm_add_action_or_reset(dev, prusim_port_remove_debugfs, pp);
 	if (ret)
 		return ret;
