@@ -50,9 +50,13 @@ static u16 fw_le16(const u8 *p)
  * @size: its size
  * @events: set to the events (bit N: system event N, 0..63)
  *
+ * Only system events 0..63 exist on the AM335x's INTC; a map's entry above
+ * that is no event of it (and the PRU remoteproc driver fails to map it).
+ *
  * Return: 0 (with *@events 0 if the file has no such section), or -EINVAL
- * for a file that is no little-endian ELF32 image or whose section table or
- * map is malformed - one the PRU remoteproc driver refuses too.
+ * for a file that is no little-endian ELF32 image, whose section table is
+ * not one this reader and the PRU remoteproc driver read alike (40-byte
+ * entries, every name inside the string table), or whose map is malformed.
  */
 int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events)
 {
@@ -70,7 +74,8 @@ int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events)
 	shstrndx = fw_le16(elf + FW_E_SHSTRNDX);
 	if (!shnum)
 		return 0;
-	if (shentsize < FW_SHDR_SIZE || shstrndx >= shnum || shoff > size ||
+	/* pru_rproc walks the table in steps of sizeof(struct elf32_shdr) */
+	if (shentsize != FW_SHDR_SIZE || shstrndx >= shnum || shoff > size ||
 	    (u64)shnum * shentsize > size - shoff)
 		return -EINVAL;
 
@@ -86,8 +91,10 @@ int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events)
 
 		sh = elf + shoff + (size_t)i * shentsize;
 		name = fw_le32(sh + FW_SH_NAME);
-		if (name >= str_size || !memchr(strtab + name, 0, str_size - name) ||
-		    strcmp(strtab + name, ".pru_irq_map"))
+		/* pru_rproc would compare a name out of bounds: refuse */
+		if (name >= str_size || !memchr(strtab + name, 0, str_size - name))
+			return -EINVAL;
+		if (strcmp(strtab + name, ".pru_irq_map"))
 			continue;
 		off = fw_le32(sh + FW_SH_OFFSET);
 		len = fw_le32(sh + FW_SH_SIZE);

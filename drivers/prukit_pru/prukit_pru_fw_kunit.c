@@ -72,11 +72,12 @@ static void prukit_pru_fw_map(struct kunit *test)
 {
 	static const u8 map[] = { 0, 3, 16, 2, 2, 17, 0, 0, 63, 9, 9 };
 	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	size_t size;
 	u64 ev;
 
 	KUNIT_ASSERT_NOT_NULL(test, img);
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
-									NAME_MAP), &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
 	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(16) | BIT_ULL(17) | BIT_ULL(63));
 }
 
@@ -84,12 +85,13 @@ static void prukit_pru_fw_no_map(struct kunit *test)
 {
 	static const u8 map[] = { 0, 1, 20, 4, 4 };
 	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	size_t size;
 	u64 ev = ~0ull;
 
 	KUNIT_ASSERT_NOT_NULL(test, img);
 	/* the same bytes in a section of another name */
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
-									NAME_TEXT), &ev));
+	size = fw_image(img, map, sizeof(map), NAME_TEXT);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
 	KUNIT_EXPECT_EQ(test, ev, 0ull);
 	/* no section table at all */
 	put16(img + 48, 0);
@@ -103,11 +105,12 @@ static void prukit_pru_fw_events_above_63(struct kunit *test)
 	/* the AM335x INTC has 64 events; the map's byte may say more */
 	static const u8 map[] = { 0, 2, 64, 0, 0, 5, 1, 1 };
 	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	size_t size;
 	u64 ev;
 
 	KUNIT_ASSERT_NOT_NULL(test, img);
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, fw_image(img, map, sizeof(map),
-									NAME_MAP), &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
 	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(5));
 }
 
@@ -141,6 +144,35 @@ static void prukit_pru_fw_malformed(struct kunit *test)
 	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size - 1, &ev));
 	put16(img + 50, 4);
 	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 32, 0xfffffff0);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/*
+	 * section headers of another size than pru_rproc's steps: it would
+	 * read another table than this reader
+	 */
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put16(img + 46, 0);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	put16(img + 46, 39);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	put16(img + 46, 41);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	/* in 80-byte steps, a table of the null section and the string table */
+	put16(img + 46, 80);
+	put16(img + 48, 2);
+	put16(img + 50, 1);
+	memcpy(img + 256 + 80, img + 256 + 120, 40);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/* a string table beyond the file */
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 256 + 120 + 16, size);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 256 + 120 + 20, 0xffffff00);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
 
 	/* a map section past the end of the file */
 	size = fw_image(img, map, sizeof(map), NAME_MAP);
@@ -153,11 +185,20 @@ static void prukit_pru_fw_malformed(struct kunit *test)
 	size = fw_image(img, bad_count, sizeof(bad_count), NAME_MAP);
 	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
 
-	/* a section name without its terminating NUL is no match */
+	/* a map shorter than its header */
+	size = fw_image(img, map, 1, NAME_MAP);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+
+	/*
+	 * a section name without its terminating NUL inside the string table,
+	 * or beyond it: pru_rproc would compare past the table's end
+	 */
 	size = fw_image(img, map, sizeof(map), NAME_MAP);
 	put32(img + 256 + 120 + 20, NAME_MAP + 5);	/* strtab cut inside ".pru_irq_map" */
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
-	KUNIT_EXPECT_EQ(test, ev, 0ull);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
+	size = fw_image(img, map, sizeof(map), NAME_MAP);
+	put32(img + 256 + 40, sizeof(fw_strtab));	/* .text's name at the table's end */
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
 }
 
 static struct kunit_case prukit_pru_fw_cases[] = {

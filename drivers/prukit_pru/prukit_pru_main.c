@@ -244,8 +244,9 @@ static u64 prukit_pru_own_events(struct prukit_pru *pru)
  * event the consumer's node also takes is the same Linux interrupt: the
  * disposal would free it under the driver's handler (and the driver's own
  * free_irq() would then free an interrupt that is gone).  Such firmware is
- * refused.  A file that cannot be read or parsed here is left to
- * rproc_boot(), which reports it.
+ * refused, and so is firmware whose section table cannot be read safely
+ * (the PRU remoteproc driver checks less).  A file that cannot be loaded is
+ * left to rproc_boot(), which reports it.
  */
 static int prukit_pru_check_irq_map(struct prukit_pru *pru, const char *firmware)
 {
@@ -258,7 +259,12 @@ static int prukit_pru_check_irq_map(struct prukit_pru *pru, const char *firmware
 		return 0;
 	ret = prukit_pru_fw_irq_events(fw->data, fw->size, &mapped);
 	release_firmware(fw);
-	if (ret || !(own & mapped))
+	if (ret) {
+		dev_err(pru->dev, "%s: not a PRU ELF32 image whose sections and .pru_irq_map can be read\n",
+			firmware);
+		return ret;
+	}
+	if (!(own & mapped))
 		return 0;
 	dev_err(pru->dev, "%s maps system event %u in its .pru_irq_map, which %pOF takes as its interrupt: the PRU remoteproc driver would dispose of that mapping when the core stops, under the driver's handler\n",
 		firmware, (unsigned int)__ffs64(own & mapped), pru->dev->of_node);
@@ -274,8 +280,9 @@ static int prukit_pru_check_irq_map(struct prukit_pru *pru, const char *firmware
  * sysfs, say): prukit never takes over firmware someone else started; and
  * if the firmware's .pru_irq_map maps a system event that the consumer's
  * node takes as its interrupt (the PRU remoteproc driver would dispose of
- * that interrupt at the core's stop).  prukit_pru_shutdown(), or the
- * driver unbinding, stops it again.
+ * that interrupt at the core's stop); with -EINVAL if, with such an
+ * interrupt, the file's sections cannot be read safely.
+ * prukit_pru_shutdown(), or the driver unbinding, stops it again.
  *
  * Return: 0 or a negative errno (also logged).
  */
