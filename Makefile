@@ -7,16 +7,20 @@
 #   make / make modules   modules against KDIR (default: the running kernel)
 #   make install          modules, PRU firmware, overlays, udev rule, uapi headers,
 #                         servers (beaglelogic-tcpd) and their systemd units
-#   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse)
+#   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse),
+#                         as Debian ships them and with the kernel's own PRU drivers
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
 #   make overlays         device-tree overlays (out/overlays/*.dtbo), build only;
 #                         make check validates them (scripts/overlays.sh --check)
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
-#   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]
+#   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]:
+#                         the kernel's own PRU drivers on the QEMU PRU-ICSS (rpmsg on pru_sim)
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
-#   make demo             the emulated BeagleBone runs the Cookbook NeoPixel example
-#   make bench            speed: prusim, pru_sim in the VM, rpmsg round trips, cycles per message
+#   make demo             the emulated BeagleBone runs prukit's drivers and the Cookbook's
+#                         NeoPixel example, and shows what the pins did
+#   make bench            speed: the simulator on the host and in the VM, the layer's round
+#                         trip, rpmsg round trips, cycles per message, the drivers' figures
 #   make check            everything CI runs; ends with "N passed, N failed"
 
 PRUKIT_VERSION := $(shell sed -n 's/^PACKAGE_VERSION="\(.*\)"/\1/p' $(CURDIR)/dkms.conf)

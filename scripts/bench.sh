@@ -4,9 +4,13 @@
 # make bench: speed figures, measured, never asserted (these machines are
 # shared and noisy).  PRU time itself is exact and is not a benchmark.
 #   - prusim on one host core, both PRU cores busy (tests/prusim/bench.sh)
-#   - pru_sim inside the VM (Debian 6.1 under QEMU TCG): simulated cycles
-#     per second, and rpmsg round trips and bytes per second through
-#     /dev/rpmsg_pru30
+#   - the simulator in the VM (Debian 6.1 under QEMU TCG) on both boots: the
+#     board path's PRU-ICSS in QEMU and the in-guest pru_sim, simulated
+#     cycles per second with both cores running blinky, beside the prusim
+#     tool on the host running the same firmware in the same run (the
+#     ratios); the PRU-consumer layer's command round trip in PRU cycles on
+#     both; rpmsg round trips and bytes per second through /dev/rpmsg_pru30
+#     (pru_sim)
 #   - PRU cycles the firmware spends per received and per sent rpmsg message
 #     (exact: counted by the simulator in tests/rpmsg-fw, not timed)
 #   - pru_sim's PRU -> ARM event latency in PRU cycles
@@ -46,9 +50,44 @@ grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
 	  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
 grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
 out=$PRUKIT_TOP/out/bench
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out" 2>&1 |
-	grep -E '^(BENCH|INFO):' || true
-# The long stop/start stress (900 cycles under rpmsg I/O, page_poison=1):
+mkdir -p "$out"
+# The simulator's speed, side by side: the same firmware (blinky on both
+# cores) in the host tool, then in the VM on both boots.
+host_mcps=$(python3 - "$PRUKIT_TOP/out/tools/prusim" "$PRUKIT_TOP/out/firmware" <<'PY'
+import json, resource, subprocess, sys
+prusim, fw = sys.argv[1:]
+cmd = [prusim, "--pru0", fw + "/blinky-pru0.elf", "--pru1", fw + "/blinky-pru1.elf",
+       "--max-cycles", "400000000", "--json"]
+res = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout)
+ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+print("%.2f" % (res["cycles"] / (ru.ru_utime + ru.ru_stime) / 1e6))
+PY
+)
+echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
+for boot in board pru_sim; do
+	PRUKIT_VM_BOOT=$boot "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" \
+		"" "$out/guest-$boot" >"$out/guest-$boot.log" 2>&1 ||
+		{ tail -n 20 "$out/guest-$boot.log"; die "the bench guest failed on the $boot boot"; }
+	grep -E '^(BENCH|INFO):' "$out/guest-$boot.log" || true
+done
+python3 - "$host_mcps" "$out/guest-board.log" "$out/guest-pru_sim.log" <<'PY'
+import re, sys
+host = float(sys.argv[1])
+def mcps(log):
+    for line in open(log):
+        m = re.search(r"blinky on both cores: ([0-9.]+) M simulated cycles per second of simulation", line)
+        if m:
+            return float(m.group(1))
+    return None
+board, sim = mcps(sys.argv[2]), mcps(sys.argv[3])
+if board and sim:
+    print("BENCH: simulator speed, blinky on both cores, PRU cycles per second of simulation "
+          "time: board path (QEMU device) %.1f M = %.0f%% of the host tool's %.1f M; in-guest "
+          "pru_sim %.1f M = %.1f%%; the board path is %.0fx pru_sim"
+          % (board, 100 * board / host, host, sim, 100 * sim / host, board / sim))
+PY
+# The long stop/start stress (900 cycles under rpmsg I/O, page_poison=1),
+# on the pru_sim boot, the only one with rpmsg (Documentation/pru_sim.rst):
 # not a speed figure, but too long for make check.  Its checks count: a
 # FAIL line, a splat or a run that does not finish fails make bench.
 # About 1.2 s per cycle under TCG (900 cycles took 1108 s on 6.12), so the
@@ -56,7 +95,8 @@ out=$PRUKIT_TOP/out/bench
 mkdir -p "$out"
 rc=0
 for k in ${BENCH_STRESS_KVERS:-6.1 6.12}; do
-	VM_TIMEOUT=${VM_TIMEOUT:-4800} "$PRUKIT_TOP/scripts/vm.sh" run "$k" \
+	PRUKIT_VM_BOOT=pru_sim VM_TIMEOUT=${VM_TIMEOUT:-4800} \
+		"$PRUKIT_TOP/scripts/vm.sh" run "$k" \
 		"$PRUKIT_TOP/tests/vm/bench/stop-stress" "" "$out/stress-$k" \
 		>"$out/stress-$k.log" 2>&1 || rc=$?
 	grep -E '^(PASS|FAIL|INFO):' "$out/stress-$k.log" | sed "s/^/$k: /" || true

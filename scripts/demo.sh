@@ -2,11 +2,11 @@
 # SPDX-License-Identifier: GPL-2.0-only
 #
 # make demo: on a fresh machine, build what is needed, boot the emulated
-# BeagleBone (Debian's 6.1 kernel, pru_sim's PRU-ICSS) once and run in it
-# (tests/vm/demo/all):
+# BeagleBone (Debian's 6.1 kernel under QEMU, with prukit's PRU-ICSS at its
+# AM335x addresses and the kernel's own pruss, pruss_intc and pru_rproc:
+# the board path, Documentation/qemu-pruss.rst) and run in it
+# (tests/vm/demo/board):
 #
-#  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
-#    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel);
 #  - prukit's ws281x driver (tests/vm/demo/ws281x): LED 0 of the shipped
 #    overlay's string on P9_29 as a Linux LED (rgb:status-0, the timer
 #    trigger), then an animation written to /dev/ws281xN on the four strings
@@ -21,6 +21,12 @@
 #    the pins by tools/hub75-decode.py and drawn as the panel would look
 #    (drivers/hub75/tests/hub75_demo.py: matrix-picture.png,
 #    matrix-scroll.gif, matrix-scroll.png).
+#
+# then boot it again on pru_sim, the in-guest simulator (the kernel's
+# pru_rproc has no kick, which rpmsg needs), for
+#
+#  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
+#    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel).
 #
 # What the simulated pins did is decoded by sigrok's rgb_led_ws281x decoder
 # (GRB strings; the others by tools/ws281x-show.py's own decoder, which must
@@ -41,8 +47,13 @@ in=$(mktemp -d)
 trap 'rm -rf "$in"' EXIT
 cp -r "$PRUKIT_TOP/tests/vm/demo/." "$in/"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" frames "$in/matrix-frames"
-msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, PRUs simulated by pru_sim)"
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/all" "$in" "$out"
+msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, the kernel's own PRU drivers on a simulated PRU-ICSS)"
+"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/board" "$in" "$out"
+msg "booting it again with pru_sim for the Cookbook's rpmsg example (the kernel's pru_rproc cannot kick)"
+PRUKIT_VM_BOOT=pru_sim "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/neopixel" "$in" "$out/rpmsg"
+mv "$out/rpmsg/dmesg.txt" "$out/dmesg-rpmsg.txt"
+mv "$out"/rpmsg/* "$out/"
+rmdir "$out/rpmsg"
 
 "$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/trace.bin" --events "$out/neopixel.events" \
 	--vcd "$out/neopixel.vcd"
