@@ -16,9 +16,9 @@
  *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
  *               reaches the pin trace only through a pad muxed to it
  *   0x5f000000  prukit's test port: pin trace, input stimulus, statistics
- *               and a knob that freezes simulated time, for tests inside
- *               the guest (registers: sim/prusim_port.h; a guest driver,
- *               prukit's tests/kmod/prusim_port.c, shows them in debugfs)
+ *               and timing knobs, for tests inside the guest (registers:
+ *               sim/prusim_port.h; a guest driver, prukit's
+ *               tests/kmod/prusim_port.c, shows them in debugfs)
  *
  * Accesses to the rest of L4_WKUP, L4_PER and L4_FAST, and to registers of
  * the blocks above that are not modelled, are logged (-d unimp) and counted
@@ -148,6 +148,7 @@ static const struct {
 #define PAD_RESET               0x27    /* mode 7, pull-down, receiver on */
 #define PAD_MASK                0x7f
 #define UNIMP_LAST_LEN          160
+#define KNOB_MAX_US             1000000
 
 typedef struct PrussInput {
     struct prusim_stim stim;
@@ -197,6 +198,7 @@ struct AM335xPrussState {
     bool runnable;                  /* the last slice did not end idle */
     bool irq_dirty;                 /* a host interrupt line may have changed */
     bool vm_running;
+    bool ocp_pause;                 /* an OCP write ended the slice */
     VMChangeStateEntry *vmstate_entry;
 
     struct prusim *s;
@@ -248,7 +250,8 @@ struct AM335xPrussState {
     uint64_t unimp;
     char unimp_last[UNIMP_LAST_LEN];
 
-    /* knob: 0 or 1 */
+    /* knobs (microseconds; freeze: 0 or 1) */
+    uint32_t ocp_write_pause_us;
     uint32_t freeze;
 };
 
@@ -487,6 +490,11 @@ static int cb_ocp(AM335xPrussState *p, u32 addr, void *buf, unsigned int len,
         snprintf(p->ocp_err, sizeof(p->ocp_err),
                  "OCP %s at 0x%08x failed", what, addr);
         goto fail;
+    }
+    if (write && p->ocp_write_pause_us) {
+        /* knob: the thread pauses after this store (pruss_thread()) */
+        p->ocp_pause = true;
+        prusim_yield(p->s);
     }
     return 0;
 fail:
@@ -1021,6 +1029,7 @@ enum port_file {
     PF_TRACE,
     PF_STATS,
     PF_PADS,
+    PF_OCP_WRITE_PAUSE_US,
     PF_FREEZE,
     PF_INPUT,               /* PF_INPUT + port: input/<name> */
     PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
@@ -1030,6 +1039,7 @@ static const char *const port_file_name[PF_NUM] = {
     [PF_TRACE] = "trace",
     [PF_STATS] = "stats",
     [PF_PADS] = "pads",
+    [PF_OCP_WRITE_PAUSE_US] = "ocp_write_pause_us",
     [PF_FREEZE] = "freeze",
     [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
     [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
@@ -1214,6 +1224,9 @@ static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
     case PF_PADS:
         *len = port_pads(p);
         return 0;
+    case PF_OCP_WRITE_PAUSE_US:
+        *len = port_reply(p, "%u\n", p->ocp_write_pause_us);
+        return 0;
     case PF_FREEZE:
         *len = port_reply(p, "%u\n", p->freeze);
         return 0;
@@ -1323,6 +1336,9 @@ static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
         return port_write_trace(p, len, reply);
     case PF_PADS:
         return port_write_pads(p, len, reply);
+    case PF_OCP_WRITE_PAUSE_US:
+        return port_write_knob(p, &p->ocp_write_pause_us, KNOB_MAX_US, len,
+                               reply);
     case PF_FREEZE:
         return port_write_knob(p, &p->freeze, 1, len, reply);
     }
@@ -1553,6 +1569,7 @@ static void *pruss_thread(void *opaque)
     qemu_mutex_lock(&p->lock);
     while (!p->quit) {
         int wait_ms = 0;
+        uint32_t pause_us;
         int64_t t0;
 
         /*
@@ -1587,6 +1604,14 @@ static void *pruss_thread(void *opaque)
          */
         p->runnable = !p->s->waiting || inputs_pending(p);
         report_stops(p);
+        pause_us = p->ocp_pause ? p->ocp_write_pause_us : 0;
+        p->ocp_pause = false;
+        if (pause_us) {
+            /* knob: the ARM runs while the firmware sits after its store */
+            qemu_mutex_unlock(&p->lock);
+            g_usleep(pause_us);
+            qemu_mutex_lock(&p->lock);
+        }
         if (p->irq_dirty) {
             qemu_mutex_unlock(&p->lock);
             qemu_mutex_lock_iothread();
@@ -1650,6 +1675,8 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->expired_lines = 0;
     p->expired_events = 0;
     p->hold_since = 0;
+    p->ocp_pause = false;
+    p->ocp_write_pause_us = 0;
     memset(p->strobe, 0, sizeof(p->strobe));
     memset(p->stopped_reported, 0, sizeof(p->stopped_reported));
     p->freeze = 0;
