@@ -1425,7 +1425,9 @@ static void stage_free(PrussStage *st)
 /* Run a command of the test port.  BQL and lock held. */
 static void port_command(AM335xPrussState *p, uint32_t cmd)
 {
-    unsigned int op = cmd & 0xff, file = (cmd >> 8) & 0xff, h = cmd >> 16;
+    unsigned int op = PRUSIM_TEST_PORT_CMD_OP(cmd);
+    unsigned int file = PRUSIM_TEST_PORT_CMD_FILE(cmd);
+    unsigned int h = PRUSIM_TEST_PORT_CMD_HANDLE(cmd);
     uint32_t len = MIN(p->port_len, (uint32_t)PORT_BUF_SIZE), reply = 0;
     PrussStage *st = h < PORT_HANDLES ? &p->stage[h] : NULL;
     int status = 0;

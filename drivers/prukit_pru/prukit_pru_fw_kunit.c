@@ -68,34 +68,38 @@ static size_t fw_image(u8 *img, const u8 *map, u32 map_len, u32 map_name)
 	return 256 + 4 * 40;
 }
 
+/* An image with @map in a section named @name reads as events @want */
+static void expect_events(struct kunit *test, const u8 *map, u32 map_len, u32 name, u64 want)
+{
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	size_t size;
+	u64 ev = ~0ull;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	size = fw_image(img, map, map_len, name);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
+	KUNIT_EXPECT_EQ(test, ev, want);
+}
+
 static void prukit_pru_fw_map(struct kunit *test)
 {
 	static const u8 map[] = { 0, 3, 16, 2, 2, 17, 0, 0, 63, 9, 9 };
-	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
-	size_t size;
-	u64 ev;
 
-	KUNIT_ASSERT_NOT_NULL(test, img);
-	size = fw_image(img, map, sizeof(map), NAME_MAP);
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
-	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(16) | BIT_ULL(17) | BIT_ULL(63));
+	expect_events(test, map, sizeof(map), NAME_MAP, BIT_ULL(16) | BIT_ULL(17) | BIT_ULL(63));
 }
 
 static void prukit_pru_fw_no_map(struct kunit *test)
 {
 	static const u8 map[] = { 0, 1, 20, 4, 4 };
 	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
-	size_t size;
 	u64 ev = ~0ull;
 
 	KUNIT_ASSERT_NOT_NULL(test, img);
 	/* the same bytes in a section of another name */
-	size = fw_image(img, map, sizeof(map), NAME_TEXT);
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
-	KUNIT_EXPECT_EQ(test, ev, 0ull);
+	expect_events(test, map, sizeof(map), NAME_TEXT, 0);
 	/* no section table at all */
+	fw_image(img, map, sizeof(map), NAME_MAP);
 	put16(img + 48, 0);
-	ev = ~0ull;
 	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, IMG_SIZE, &ev));
 	KUNIT_EXPECT_EQ(test, ev, 0ull);
 }
@@ -104,14 +108,8 @@ static void prukit_pru_fw_events_above_63(struct kunit *test)
 {
 	/* the AM335x INTC has 64 events; the map's byte may say more */
 	static const u8 map[] = { 0, 2, 64, 0, 0, 5, 1, 1 };
-	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
-	size_t size;
-	u64 ev;
 
-	KUNIT_ASSERT_NOT_NULL(test, img);
-	size = fw_image(img, map, sizeof(map), NAME_MAP);
-	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(img, size, &ev));
-	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(5));
+	expect_events(test, map, sizeof(map), NAME_MAP, BIT_ULL(5));
 }
 
 static void prukit_pru_fw_malformed(struct kunit *test)
