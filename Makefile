@@ -29,6 +29,7 @@ KDIR ?= /lib/modules/$(shell uname -r)/build
 DESTDIR ?=
 FIRMWARE_DIR ?= /lib/firmware
 UDEV_RULES_DIR ?= /etc/udev/rules.d
+MODPROBE_DIR ?= /lib/modprobe.d
 INCLUDE_DIR ?= /usr/include
 SBIN_DIR ?= /usr/sbin
 SYSTEMD_UNIT_DIR ?= /lib/systemd/system
@@ -37,7 +38,7 @@ BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
+	overlays overlays_install udev_install modprobe_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
 
@@ -101,6 +102,10 @@ $(BUILD)/udev/60-prukit.rules: FORCE
 
 FORCE:
 
+# modprobe.d/prukit.conf: which module comes with which (see its comments)
+modprobe_install:
+	install -D -m 0644 $(CURDIR)/modprobe.d/prukit.conf $(DESTDIR)$(MODPROBE_DIR)/prukit.conf
+
 udev_install: $(BUILD)/udev/60-prukit.rules
 	install -D -m 0644 $< $(DESTDIR)$(UDEV_RULES_DIR)/60-prukit.rules
 
@@ -124,7 +129,7 @@ server_install:
 	done
 
 install: modules_install firmware_install overlays_install udev_install headers_install \
-	server_install
+	server_install modprobe_install
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh

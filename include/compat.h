@@ -87,6 +87,16 @@ out:
 #endif
 
 /*
+ * rproc_vq_interrupt(): exported by the remoteproc core (remoteproc_virtio.c)
+ * but declared only in drivers/remoteproc/remoteproc_internal.h, which a
+ * module built outside the kernel tree cannot include; unchanged from v3.4
+ * to v6.12.  The same on every kernel, here beside its kin.
+ */
+#include <linux/irqreturn.h>
+struct rproc;
+irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
+
+/*
  * rproc_da_to_va(): exported since v3.4 but declared only in
  * drivers/remoteproc/remoteproc_internal.h until v5.18 ("remoteproc: move
  * rproc_da_to_va declaration to remoteproc.h"); v5.13 added "bool

@@ -94,6 +94,16 @@ build_prukit() {
 	qemu_binary
 }
 
+# boot_dir KVER BOOT - the directory of a kernel's boot: out/vm/<kernel>
+# for the board path, out/vm/<kernel>-pru_sim for pru_sim.
+boot_dir() {
+	if [ "$2" = board ]; then
+		echo "$PRUKIT_TOP/out/vm/$1"
+	else
+		echo "$PRUKIT_TOP/out/vm/$1-$2"
+	fi
+}
+
 # case_boot PATH - the boot a test case runs in: "pru_sim" if it says so
 # in a line "prukit-vm-boot: pru_sim", else "board".
 case_boot() {
@@ -217,8 +227,8 @@ make_initrd() {
 	# The udev rules and the servers, as make install puts them (udev runs
 	# only when a test starts it: drivers/ws281x/tests/vm/cases/80-ws281x-cycles;
 	# the servers too: drivers/beaglelogic/tests/vm/cases/82-beaglelogic)
-	make -s -C "$PRUKIT_TOP" udev_install server_install DESTDIR="$stage" >/dev/null ||
-		die "make udev_install server_install failed"
+	make -s -C "$PRUKIT_TOP" udev_install server_install modprobe_install DESTDIR="$stage" >/dev/null ||
+		die "make udev_install server_install modprobe_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	local modules=$PRUKIT_VM_MODULES_SIM
@@ -333,7 +343,7 @@ kernel_log_clean() {
 # Loaded in this order at boot (no udev loads them).  The board path: the
 # kernel's PRU drivers, the simulator's test port and the test consumer.
 # pru_sim: the rpmsg transport, prukit's modules and the test consumer.
-PRUKIT_VM_MODULES_BOARD=${PRUKIT_VM_MODULES_BOARD:-pruss irq_pruss_intc pru_rproc prusim_port pru_test_consumer}
+PRUKIT_VM_MODULES_BOARD=${PRUKIT_VM_MODULES_BOARD:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port pru_test_consumer}
 PRUKIT_VM_MODULES_SIM=${PRUKIT_VM_MODULES_SIM:-virtio_rpmsg_bus rpmsg_pru pru_sim pru_test_consumer}
 
 cmd=${1:-}
@@ -349,8 +359,7 @@ run)
 	runboot=${PRUKIT_VM_BOOT:-board}
 	case $runboot in board | pru_sim) ;; *) die "PRUKIT_VM_BOOT is board or pru_sim" ;; esac
 	build_prukit "$series" "$runboot"
-	dir=$PRUKIT_TOP/out/vm/$kver/run
-	[ "$runboot" = board ] || dir=$PRUKIT_TOP/out/vm/$kver-$runboot/run
+	dir=$(boot_dir "$kver" "$runboot")/run
 	mkdir -p "$dir"
 	make_dtb "$dir/dtb" "$runboot"
 	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")" "$runboot"
@@ -399,8 +408,7 @@ test)
 			build_prukit "$series" "$b"
 			kver_of[$series]=$kver
 			kimage_of[$series]=$kimage
-			dir=$PRUKIT_TOP/out/vm/$kver
-			[ "$b" = board ] || dir=$dir-$b
+			dir=$(boot_dir "$kver" "$b")
 			mkdir -p "$dir"
 			make_dtb "$dir/dtb" "$b"
 			make_initrd "$dir" test "$bt" "$b"
@@ -417,8 +425,7 @@ test)
 		fi
 		kver=${kver_of[$series]}
 		kimage=${kimage_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/$kver
-		[ "$b" = board ] || dir=$dir-$b
+		dir=$(boot_dir "$kver" "$b")
 		msg "vmtest: booting $kver ($b)"
 		rm -f "$dir/results" "$dir/seconds"
 		(
@@ -436,9 +443,9 @@ test)
 		series=${sb%%:*}
 		b=${sb#*:}
 		kver=${kver_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/$kver
+		dir=$(boot_dir "$kver" "$b")
 		label=$series
-		if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; dir=$dir-$b; label=$series/$b; fi
+		if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; label=$series/$b; fi
 		res=$dir/results
 		# kernel_log_clean's line comes last: without it the boot's
 		# results are not all there.

@@ -28,13 +28,6 @@
 struct irq_domain;
 struct pru_sim;
 
-/*
- * Exported by the remoteproc core (remoteproc_virtio.c) but declared only
- * in drivers/remoteproc/remoteproc_internal.h, which a driver built outside
- * the kernel tree cannot include; unchanged from v3.4 to v6.12.
- */
-irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
-
 /**
  * struct pru_sim_core - one simulated PRU core, as a remote processor
  * @sim: the PRU-ICSS it belongs to

@@ -7,6 +7,40 @@
 
 #include <linux/types.h>
 
+/**
+ * struct prukit_pru_fw_irq - one entry of a firmware's .pru_irq_map
+ * @event: the system event (0..63 on the AM335x), -1 for none
+ * @channel: the INTC channel it is routed to
+ * @host: the host interrupt that channel is routed to (0, 1: the PRUs'
+ *	R31; 2..9: the ARM's PRU_EVTOUT0..7)
+ */
+struct prukit_pru_fw_irq {
+	int event;
+	u8 channel;
+	u8 host;
+};
+
+int prukit_pru_fw_irq_map(const u8 *elf, size_t size, const u8 **entries,
+			  unsigned int *count);
 int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events);
+int prukit_pru_fw_rpmsg_events(const u8 *map, unsigned int count,
+			       struct prukit_pru_fw_irq *kick,
+			       struct prukit_pru_fw_irq *vring);
+
+struct rproc_ops;
+
+/**
+ * enum prukit_pru_kick_choice - what prukit_pru_kick does with a PRU
+ *	remote processor
+ * @PRUKIT_PRU_KICK_GIVE: its driver has no kick (mainline's pru_rproc):
+ *	prukit gives it one, and the vring interrupt
+ * @PRUKIT_PRU_KICK_ASIDE: its driver kicks (TI's pru_rproc): prukit stays out
+ */
+enum prukit_pru_kick_choice {
+	PRUKIT_PRU_KICK_GIVE,
+	PRUKIT_PRU_KICK_ASIDE,
+};
+
+enum prukit_pru_kick_choice prukit_pru_kick_choose(const struct rproc_ops *ops);
 
 #endif /* _PRUKIT_PRU_FW_H */

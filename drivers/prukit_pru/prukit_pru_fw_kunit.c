@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * KUnit tests of prukit_pru_fw_irq_events(): the system events of a PRU
- * firmware's .pru_irq_map, from ELF images built here, well-formed and not.
+ * KUnit tests of prukit_pru_fw.c: the system events of a PRU firmware's
+ * .pru_irq_map, from ELF images built here, well-formed and not; the events
+ * rpmsg takes from a map; and whether prukit_pru_kick gives a PRU remote
+ * processor its kick.
  */
 #include <kunit/test.h>
 #include <linux/elf.h>
+#include <linux/remoteproc.h>
 #include <linux/string.h>
 
 #include "prukit_pru_fw.h"
@@ -199,7 +202,84 @@ static void prukit_pru_fw_malformed(struct kunit *test)
 	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_irq_events(img, size, &ev));
 }
 
+/* The map rpmsg reads: the entries as prukit_pru_fw_irq_map() returns them */
+static void expect_rpmsg(struct kunit *test, const u8 *map, u32 map_len, int ret,
+			 int kick, int vring, u8 vring_host)
+{
+	struct prukit_pru_fw_irq k = { .event = -2 }, v = { .event = -2 };
+	u8 *img = kunit_kzalloc(test, IMG_SIZE, GFP_KERNEL);
+	const u8 *entries;
+	unsigned int count;
+	size_t size;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	size = fw_image(img, map, map_len, NAME_MAP);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_irq_map(img, size, &entries, &count));
+	KUNIT_ASSERT_EQ(test, map_len, 2 + 3 * count);
+	KUNIT_EXPECT_EQ(test, ret, prukit_pru_fw_rpmsg_events(entries, count, &k, &v));
+	if (ret)
+		return;
+	KUNIT_EXPECT_EQ(test, kick, k.event);
+	KUNIT_EXPECT_EQ(test, vring, v.event);
+	if (vring >= 0)
+		KUNIT_EXPECT_EQ(test, vring_host, v.host);
+}
+
+static void prukit_pru_fw_rpmsg(struct kunit *test)
+{
+	/* prukit's intc_map_0.h: 17 -> host 0 first, then 16 -> host 2 */
+	static const u8 prukit0[] = { 0, 2, 17, 0, 0, 16, 2, 2 };
+	/* and PRU1's: 19 -> host 1, 18 -> host 3 */
+	static const u8 prukit1[] = { 0, 2, 19, 1, 1, 18, 3, 3 };
+	/* the support package's examples: only the kick, the vring in the tree */
+	static const u8 ti[] = { 0, 1, 17, 0, 0 };
+	/* a consumer's event to the ARM first: nothing the ARM raises reaches the PRU */
+	static const u8 arm_first[] = { 0, 2, 16, 2, 2, 17, 0, 0 };
+	/* an empty map */
+	static const u8 empty[] = { 0, 0 };
+	/* hosts above 9 reach nobody: no vring */
+	static const u8 host10[] = { 0, 2, 17, 0, 0, 16, 9, 10 };
+
+	expect_rpmsg(test, prukit0, sizeof(prukit0), 0, 17, 16, 2);
+	expect_rpmsg(test, prukit1, sizeof(prukit1), 0, 19, 18, 3);
+	expect_rpmsg(test, ti, sizeof(ti), 0, 17, -1, 0);
+	expect_rpmsg(test, arm_first, sizeof(arm_first), -ENOENT, 0, 0, 0);
+	expect_rpmsg(test, empty, sizeof(empty), -ENOENT, 0, 0, 0);
+	expect_rpmsg(test, host10, sizeof(host10), 0, 17, -1, 0);
+}
+
+static void prukit_pru_fw_no_map_no_rpmsg(struct kunit *test)
+{
+	struct prukit_pru_fw_irq k, v;
+
+	/* a firmware without a map: TI's 5.10 kick dereferences NULL here */
+	KUNIT_EXPECT_EQ(test, -ENOENT, prukit_pru_fw_rpmsg_events(NULL, 0, &k, &v));
+	KUNIT_EXPECT_EQ(test, -1, v.event);
+}
+
+static void fake_kick(struct rproc *rproc, int vqid)
+{
+}
+
+/*
+ * The operations of both PRU remoteproc drivers as they matter here
+ * (review-checked against their sources: TI's pru_rproc_ops has .kick =
+ * pru_rproc_kick in ti-linux-5.10.y and 6.1.y; mainline's pru_rproc_ops
+ * has start, stop, da_to_va and no kick).
+ */
+static void prukit_pru_kick_choice(struct kunit *test)
+{
+	const struct rproc_ops mainline = { .kick = NULL };
+	const struct rproc_ops ti = { .kick = fake_kick };
+
+	KUNIT_EXPECT_EQ(test, PRUKIT_PRU_KICK_GIVE, prukit_pru_kick_choose(&mainline));
+	KUNIT_EXPECT_EQ(test, PRUKIT_PRU_KICK_ASIDE, prukit_pru_kick_choose(&ti));
+}
+
 static struct kunit_case prukit_pru_fw_cases[] = {
+	KUNIT_CASE(prukit_pru_fw_rpmsg),
+	KUNIT_CASE(prukit_pru_fw_no_map_no_rpmsg),
+	KUNIT_CASE(prukit_pru_kick_choice),
 	KUNIT_CASE(prukit_pru_fw_map),
 	KUNIT_CASE(prukit_pru_fw_no_map),
 	KUNIT_CASE(prukit_pru_fw_events_above_63),

@@ -1,0 +1,563 @@
+// SPDX-License-Identifier: GPL-2.0-only
+/*
+ * prukit_pru - rpmsg on PRU remote processors whose driver cannot kick
+ *
+ * Mainline's pru_rproc (and what prukit builds of it for Debian's kernels)
+ * has no .kick and no vring interrupt: remoteproc refuses every firmware
+ * with a vdev (".kick method not defined"), so the PRU Cookbook's rpmsg
+ * firmware cannot run.  TI's pru_rproc has both.  The layer's module (its
+ * only initialisation is this; modprobe.d/prukit.conf loads it after
+ * pru_rproc) gives a PRU
+ * remote processor that lacks them both, as it appears (it is bound to
+ * "pru-rproc"), and stays out of the way of one that has a kick; it does
+ * not change the kernel or pru_rproc on disk.  The choice and the reasons
+ * are in Documentation/prukit/rpmsg-kick.rst.
+ *
+ * remoteproc gives each processor its own copy of the operations
+ * (rproc_alloc() duplicates them, and pru_rproc itself sets ->load and
+ * ->parse_fw in that copy): this sets ->kick and wraps ->load, ->start and
+ * ->stop there, and adds a subdevice.  For each boot of a firmware with a
+ * vdev:
+ *
+ *  - load: the firmware's .pru_irq_map names the events.  Its first entry,
+ *    routed to host 0 or 1, is the ARM -> PRU event (TI's pru_rproc raises
+ *    the same one); the PRU -> ARM ("vring") event is the node's "vring"
+ *    interrupt where the tree has one (TI's trees, prukit's rpmsg overlay),
+ *    else the map's first entry routed to the ARM (host 2..9).  A firmware
+ *    without them is refused here, with a message, before it runs.
+ *  - start: pru_rproc's start maps the map's events; then the kick's Linux
+ *    interrupt is looked up, and the vring interrupt is requested - on
+ *    pru_rproc's mapping if the map has the event, else on a mapping made
+ *    here from the tree's specifier.
+ *  - The subdevice comes after the vdev's (it is moved to the end of the
+ *    list at each load), so remoteproc stops it first: the vring interrupt
+ *    is freed, and the kick forgotten, before the virtio device goes and
+ *    before pru_rproc's stop disposes of the mappings.  The handler
+ *    therefore never runs on a freed virtio device or a disposed mapping,
+ *    and it needs no lock that a stop holds while it waits for the handler.
+ *    Then it runs pru_rproc's stop, which halts the core: remoteproc would
+ *    halt it only after freeing the vdev's buffers, and a firmware that
+ *    checked DRIVER_OK just before would store into freed memory.
+ *  - stop: the same for a boot whose subdevice did not stop (a start that
+ *    failed after pru_rproc's start); pru_rproc's stop runs once.
+ *
+ * The module holds a reference to itself from start to stop, so it cannot
+ * go while a processor runs rpmsg through it; when it goes, it gives every
+ * processor back its own operations.
+ */
+#define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
+
+#include <linux/device.h>
+#include <linux/firmware.h>
+#include <linux/interrupt.h>
+#include <linux/irq.h>
+#include <linux/irqdomain.h>
+#include <linux/module.h>
+#include <linux/mutex.h>
+#include <linux/of.h>
+#include <linux/of_irq.h>
+#include <linux/platform_device.h>
+#include <linux/rculist.h>
+#include <linux/remoteproc.h>
+#include <linux/slab.h>
+#include <linux/spinlock.h>
+
+#include "compat.h"
+#include "prukit_pru_fw.h"
+
+/* The PRU remoteproc driver's name, TI's and mainline's */
+#define PRU_KICK_RPROC_DRIVER	"pru-rproc"
+
+/**
+ * struct pru_kick - a PRU remote processor this module gives a kick
+ * @node: in pru_kicks
+ * @rproc: the processor (a reference is held)
+ * @dev: its PRU core's platform device
+ * @subdev: stops the vring interrupt before the vdev stops
+ * @load: pru_rproc's load operation
+ * @start: its start
+ * @stop: its stop
+ * @lock: protects @kick_irq against kicks (from any context)
+ * @kick_irq: the Linux interrupt of the ARM -> PRU event while a boot with
+ *	rpmsg runs, else 0
+ * @kick: this boot's ARM -> PRU event
+ * @vring: its PRU -> ARM event
+ * @vring_irq: the vring event's Linux interrupt while requested, else 0
+ * @vring_mapped: the mapping of @vring_irq was made here (not by pru_rproc)
+ * @rpmsg: this boot's firmware has a vdev
+ * @held: the module holds a reference to itself for this boot
+ * @halted: the subdevice's stop ran pru_rproc's stop already
+ * @halt_ret: what that returned
+ */
+struct pru_kick {
+	struct list_head node;
+	struct rproc *rproc;
+	struct device *dev;
+	struct rproc_subdev subdev;
+	int (*load)(struct rproc *rproc, const struct firmware *fw);
+	int (*start)(struct rproc *rproc);
+	int (*stop)(struct rproc *rproc);
+	spinlock_t lock;		/* kick_irq, against kicks */
+	unsigned int kick_irq;
+	struct prukit_pru_fw_irq kick;
+	struct prukit_pru_fw_irq vring;
+	unsigned int vring_irq;
+	bool vring_mapped;
+	bool rpmsg;
+	bool held;
+	bool halted;
+	int halt_ret;
+};
+
+/* Changes under pru_kicks_mutex; read under RCU (kicks come from any context) */
+static LIST_HEAD(pru_kicks);
+static DEFINE_MUTEX(pru_kicks_mutex);
+
+static struct pru_kick *pru_kick_find(struct rproc *rproc)
+{
+	struct pru_kick *k;
+
+	list_for_each_entry_rcu(k, &pru_kicks, node)
+		if (k->rproc == rproc)
+			return k;
+	return NULL;
+}
+
+/* Called by remoteproc's operations, which only installed processors reach */
+static struct pru_kick *pru_kick_of(struct rproc *rproc)
+{
+	struct pru_kick *k;
+
+	rcu_read_lock();
+	k = pru_kick_find(rproc);
+	rcu_read_unlock();
+	return k;
+}
+
+/* ARM -> PRU: raise the firmware's kick event (the INTC's pending state) */
+static void pru_kick_kick(struct rproc *rproc, int vqid)
+{
+	struct pru_kick *k;
+	unsigned long flags;
+	int ret = -ENODEV;
+
+	rcu_read_lock();
+	k = pru_kick_find(rproc);
+	if (k) {
+		spin_lock_irqsave(&k->lock, flags);
+		if (k->kick_irq)
+			ret = irq_set_irqchip_state(k->kick_irq, IRQCHIP_STATE_PENDING, true);
+		spin_unlock_irqrestore(&k->lock, flags);
+	}
+	rcu_read_unlock();
+	/* outside a running boot (a stop under way) a kick has nobody to reach */
+	if (ret && k)
+		dev_dbg_ratelimited(&rproc->dev, "kick of vq %d dropped: %d\n", vqid, ret);
+}
+
+/* PRU -> ARM: the event says "look at the virtqueues", not which one */
+static irqreturn_t pru_kick_vring_thread(int irq, void *data)
+{
+	struct pru_kick *k = data;
+
+	rproc_vq_interrupt(k->rproc, 0);
+	rproc_vq_interrupt(k->rproc, 1);
+	return IRQ_HANDLED;
+}
+
+/* The PRU subsystem's INTC, whose domain maps the events */
+static struct device_node *pru_kick_intc(struct pru_kick *k)
+{
+	struct device_node *parent, *intc;
+
+	parent = of_get_parent(k->dev->of_node);
+	if (!parent)
+		return NULL;
+	intc = of_get_child_by_name(parent, "interrupt-controller");
+	of_node_put(parent);
+	return intc;
+}
+
+/*
+ * The tree's "vring" interrupt (TI's binding; prukit's rpmsg overlay adds
+ * it where BeagleBoard's trees lack it), as a map entry: 1 if the node has
+ * one, 0 if not, or an error for one that is no event of this PRUSS's INTC.
+ */
+static int pru_kick_tree_vring(struct pru_kick *k, struct prukit_pru_fw_irq *vring)
+{
+	struct device_node *np = k->dev->of_node, *intc;
+	struct of_phandle_args spec;
+	int index, ret;
+
+	index = of_property_match_string(np, "interrupt-names", "vring");
+	if (index < 0)
+		return 0;
+	ret = of_irq_parse_one(np, index, &spec);
+	if (ret)
+		return ret;
+	intc = pru_kick_intc(k);
+	ret = -EINVAL;
+	if (spec.np == intc && spec.args_count == 3 && spec.args[0] < 64 &&
+	    spec.args[1] < 10 && spec.args[2] >= 2 && spec.args[2] <= 9) {
+		vring->event = spec.args[0];
+		vring->channel = spec.args[1];
+		vring->host = spec.args[2];
+		ret = 1;
+	}
+	of_node_put(intc);
+	of_node_put(spec.np);
+	return ret;
+}
+
+/* Put the subdevice last, after the vdevs this boot's resources added */
+static void pru_kick_subdev_last(struct pru_kick *k)
+{
+	struct rproc_subdev *s;
+
+	list_for_each_entry(s, &k->rproc->subdevs, node) {
+		if (s == &k->subdev) {
+			rproc_remove_subdev(k->rproc, &k->subdev);
+			break;
+		}
+	}
+	rproc_add_subdev(k->rproc, &k->subdev);
+}
+
+static int pru_kick_load(struct rproc *rproc, const struct firmware *fw)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	struct prukit_pru_fw_irq tree;
+	const u8 *map;
+	unsigned int count;
+	int ret;
+
+	ret = k->load(rproc, fw);
+	if (ret)
+		return ret;
+	pru_kick_subdev_last(k);
+	k->rpmsg = !list_empty(&rproc->rvdevs);
+	if (!k->rpmsg)
+		return 0;
+
+	ret = prukit_pru_fw_irq_map(fw->data, fw->size, &map, &count);
+	if (ret) {
+		dev_err(k->dev, "%s: its .pru_irq_map cannot be read\n", rproc->firmware);
+		return ret;
+	}
+	ret = prukit_pru_fw_rpmsg_events(map, count, &k->kick, &k->vring);
+	if (ret) {
+		dev_err(k->dev, "%s has an rpmsg vdev, but its .pru_irq_map %s: nothing could kick it (the map's first entry is the ARM -> PRU event, routed to host 0 or 1)\n",
+			rproc->firmware, map ? "does not start with such an event" :
+			"is missing");
+		return -EINVAL;
+	}
+	ret = pru_kick_tree_vring(k, &tree);
+	if (ret < 0) {
+		dev_err(k->dev, "the \"vring\" interrupt of %pOF is no event of its PRUSS's INTC routed to the ARM (host 2..9)\n",
+			k->dev->of_node);
+		return ret;
+	}
+	if (ret > 0) {
+		/* the map may route the same event; then the two must agree */
+		unsigned int n;
+
+		for (n = 0; n < count; n++) {
+			const u8 *e = map + 3 * n;
+
+			if (e[0] == tree.event && (e[1] != tree.channel || e[2] != tree.host)) {
+				dev_err(k->dev, "%s routes system event %u to channel %u, host %u; %pOF's \"vring\" interrupt to channel %u, host %u\n",
+					rproc->firmware, e[0], e[1], e[2], k->dev->of_node,
+					tree.channel, tree.host);
+				return -EINVAL;
+			}
+		}
+		k->vring = tree;
+	}
+	if (k->vring.event < 0) {
+		dev_err(k->dev, "%s has an rpmsg vdev, but no PRU -> ARM event: neither %pOF has a \"vring\" interrupt nor its .pru_irq_map routes an event to host 2..9\n",
+			rproc->firmware, k->dev->of_node);
+		return -EINVAL;
+	}
+	return 0;
+}
+
+/* Forget the kick and free the vring interrupt: before the vdev stops */
+static void pru_kick_quiesce(struct pru_kick *k)
+{
+	unsigned long flags;
+
+	spin_lock_irqsave(&k->lock, flags);
+	k->kick_irq = 0;
+	spin_unlock_irqrestore(&k->lock, flags);
+	if (k->vring_irq) {
+		free_irq(k->vring_irq, k);
+		if (k->vring_mapped)
+			irq_dispose_mapping(k->vring_irq);
+		k->vring_irq = 0;
+		k->vring_mapped = false;
+	}
+}
+
+static int pru_kick_start(struct rproc *rproc)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	struct irq_domain *domain;
+	struct device_node *intc;
+	unsigned int kick_irq;
+	unsigned long flags;
+	int ret;
+
+	ret = k->start(rproc);
+	if (ret || !k->rpmsg)
+		return ret;
+	/* the module stays until this boot's stop */
+	if (!try_module_get(THIS_MODULE)) {
+		ret = -ENODEV;
+		goto stop;
+	}
+	k->held = true;
+
+	ret = -ENODEV;
+	intc = pru_kick_intc(k);
+	domain = intc ? irq_find_host(intc) : NULL;
+	if (!domain) {
+		dev_err(k->dev, "no interrupt domain for the PRUSS's INTC\n");
+		goto put_intc;
+	}
+	/* pru_rproc's start mapped every event of the firmware's map */
+	kick_irq = irq_find_mapping(domain, k->kick.event);
+	if (!kick_irq) {
+		dev_err(k->dev, "system event %d of %s is not mapped\n", k->kick.event,
+			rproc->firmware);
+		goto put_intc;
+	}
+	k->vring_irq = irq_find_mapping(domain, k->vring.event);
+	if (!k->vring_irq) {
+		struct irq_fwspec spec = {
+			.fwnode = of_node_to_fwnode(intc),
+			.param_count = 3,
+			.param = { k->vring.event, k->vring.channel, k->vring.host },
+		};
+
+		k->vring_irq = irq_create_fwspec_mapping(&spec);
+		if (!k->vring_irq) {
+			dev_err(k->dev, "cannot map the vring event %d (channel %u, host %u)\n",
+				k->vring.event, k->vring.channel, k->vring.host);
+			goto put_intc;
+		}
+		k->vring_mapped = true;
+	}
+	of_node_put(intc);
+
+	ret = request_threaded_irq(k->vring_irq, NULL, pru_kick_vring_thread, IRQF_ONESHOT,
+				   dev_name(k->dev), k);
+	if (ret) {
+		dev_err(k->dev, "cannot request the vring interrupt (event %d): %d\n",
+			k->vring.event, ret);
+		if (k->vring_mapped)
+			irq_dispose_mapping(k->vring_irq);
+		k->vring_irq = 0;
+		k->vring_mapped = false;
+		goto release;
+	}
+	spin_lock_irqsave(&k->lock, flags);
+	k->kick_irq = kick_irq;
+	spin_unlock_irqrestore(&k->lock, flags);
+	dev_dbg(k->dev, "rpmsg: kick event %d, vring event %d\n", k->kick.event, k->vring.event);
+	return 0;
+
+put_intc:
+	of_node_put(intc);
+release:
+	pru_kick_quiesce(k);
+	module_put(THIS_MODULE);
+	k->held = false;
+stop:
+	k->stop(rproc);
+	return ret;
+}
+
+static int pru_kick_stop(struct rproc *rproc)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	int ret;
+
+	pru_kick_quiesce(k);
+	ret = k->halted ? k->halt_ret : k->stop(rproc);
+	k->halted = false;
+	if (k->held) {
+		k->held = false;
+		/* the caller holds rproc->lock, which unloading waits for */
+		module_put(THIS_MODULE);
+	}
+	return ret;
+}
+
+/* First of a stop: quiet the interrupts, halt the core, then the vdev goes */
+static void pru_kick_subdev_stop(struct rproc_subdev *subdev, bool crashed)
+{
+	struct pru_kick *k = container_of(subdev, struct pru_kick, subdev);
+
+	pru_kick_quiesce(k);
+	if (k->held && !k->halted) {
+		k->halt_ret = k->stop(k->rproc);
+		k->halted = true;
+	}
+}
+
+/* Give a processor bound to pru-rproc its kick, unless its driver has one */
+static void pru_kick_add(struct device *dev)
+{
+	struct rproc *rproc = dev_get_drvdata(dev);
+	struct pru_kick *k;
+
+	if (!rproc)
+		return;
+	mutex_lock(&pru_kicks_mutex);
+	list_for_each_entry(k, &pru_kicks, node)
+		if (k->rproc == rproc)
+			goto out;
+	if (prukit_pru_kick_choose(rproc->ops) == PRUKIT_PRU_KICK_ASIDE) {
+		dev_info(dev, "%s kicks by itself: rpmsg needs nothing of prukit here\n",
+			 rproc->name);
+		goto out;
+	}
+	k = kzalloc(sizeof(*k), GFP_KERNEL);
+	if (!k)
+		goto out;
+	get_device(&rproc->dev);
+	k->rproc = rproc;
+	k->dev = dev;
+	spin_lock_init(&k->lock);
+	k->subdev.stop = pru_kick_subdev_stop;
+	list_add_tail_rcu(&k->node, &pru_kicks);
+
+	mutex_lock(&rproc->lock);
+	k->load = rproc->ops->load;
+	k->start = rproc->ops->start;
+	k->stop = rproc->ops->stop;
+	rproc->ops->load = pru_kick_load;
+	rproc->ops->start = pru_kick_start;
+	rproc->ops->stop = pru_kick_stop;
+	rproc->ops->kick = pru_kick_kick;
+	rproc_add_subdev(rproc, &k->subdev);
+	mutex_unlock(&rproc->lock);
+	dev_info(dev, "%s: rpmsg kick and vring interrupt by prukit\n", rproc->name);
+out:
+	mutex_unlock(&pru_kicks_mutex);
+}
+
+/* Under pru_kicks_mutex: give the operations back and forget the processor */
+static void pru_kick_remove(struct pru_kick *k)
+{
+	struct rproc *rproc = k->rproc;
+
+	mutex_lock(&rproc->lock);
+	rproc->ops->kick = NULL;
+	rproc->ops->load = k->load;
+	rproc->ops->start = k->start;
+	rproc->ops->stop = k->stop;
+	rproc_remove_subdev(rproc, &k->subdev);
+	mutex_unlock(&rproc->lock);
+	list_del_rcu(&k->node);
+	synchronize_rcu();
+	put_device(&rproc->dev);
+	kfree(k);
+}
+
+/*
+ * The PRU's driver is about to go.  5.10's rproc_del() shuts down only
+ * processors it booted itself, and would leave a running rpmsg boot's
+ * virtio device behind with this module's kick: shut it down first.
+ * Later kernels' rproc_del() would do the same.
+ */
+static void pru_kick_unbind(struct device *dev)
+{
+	struct rproc *rproc = dev_get_drvdata(dev);
+	struct pru_kick *k;
+	bool live = false;
+
+	mutex_lock(&pru_kicks_mutex);
+	list_for_each_entry(k, &pru_kicks, node)
+		if (k->rproc == rproc)
+			live = k->held;
+	mutex_unlock(&pru_kicks_mutex);
+	if (live) {
+		dev_info(dev, "%s still runs %s over rpmsg: shutting it down\n", rproc->name,
+			 rproc->firmware);
+		rproc_shutdown(rproc);
+	}
+}
+
+/* The driver has gone and deleted its processor (our reference keeps it) */
+static void pru_kick_unbound(struct device *dev)
+{
+	struct pru_kick *k, *tmp;
+
+	mutex_lock(&pru_kicks_mutex);
+	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
+		if (k->dev == dev)
+			pru_kick_remove(k);
+	mutex_unlock(&pru_kicks_mutex);
+}
+
+static bool pru_kick_is_pru(struct device *dev)
+{
+	return dev->driver && !strcmp(dev->driver->name, PRU_KICK_RPROC_DRIVER);
+}
+
+static int pru_kick_notify(struct notifier_block *nb, unsigned long action, void *data)
+{
+	struct device *dev = data;
+
+	switch (action) {
+	case BUS_NOTIFY_BOUND_DRIVER:
+		if (pru_kick_is_pru(dev))
+			pru_kick_add(dev);
+		break;
+	case BUS_NOTIFY_UNBIND_DRIVER:
+		if (pru_kick_is_pru(dev))
+			pru_kick_unbind(dev);
+		break;
+	case BUS_NOTIFY_UNBOUND_DRIVER:
+		pru_kick_unbound(dev);
+		break;
+	}
+	return NOTIFY_DONE;
+}
+
+static struct notifier_block pru_kick_nb = {
+	.notifier_call = pru_kick_notify,
+};
+
+static int pru_kick_existing(struct device *dev, void *data)
+{
+	device_lock(dev);
+	if (pru_kick_is_pru(dev))
+		pru_kick_add(dev);
+	device_unlock(dev);
+	return 0;
+}
+
+static int __init pru_kick_init(void)
+{
+	int ret;
+
+	ret = bus_register_notifier(&platform_bus_type, &pru_kick_nb);
+	if (ret)
+		return ret;
+	return bus_for_each_dev(&platform_bus_type, NULL, NULL, pru_kick_existing);
+}
+module_init(pru_kick_init);
+
+static void __exit pru_kick_exit(void)
+{
+	struct pru_kick *k, *tmp;
+
+	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
+	mutex_lock(&pru_kicks_mutex);
+	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
+		pru_kick_remove(k);
+	mutex_unlock(&pru_kicks_mutex);
+}
+module_exit(pru_kick_exit);
