@@ -20,13 +20,11 @@
 #    text written with cat to /dev/fbN of a 64x32 HUB75 panel, decoded from
 #    the pins by tools/hub75-decode.py and drawn as the panel would look
 #    (drivers/hub75/tests/hub75_demo.py: matrix-picture.png,
-#    matrix-scroll.gif, matrix-scroll.png).
-#
-# then boot it again on pru_sim, the in-guest simulator (the kernel's
-# pru_rproc has no kick, which rpmsg needs), for
-#
+#    matrix-scroll.gif, matrix-scroll.png);
 #  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
-#    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel).
+#    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel),
+#    on the kernel's pru_rproc with the kick prukit_pru gives it
+#    (Documentation/rpmsg-kick.rst).
 #
 # What the simulated pins did is decoded by sigrok's rgb_led_ws281x decoder
 # (GRB strings; the others by tools/ws281x-show.py's own decoder, which must
@@ -49,11 +47,6 @@ cp -r "$PRUKIT_TOP/tests/vm/demo/." "$in/"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" frames "$in/matrix-frames"
 msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, the kernel's own PRU drivers on a simulated PRU-ICSS)"
 "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/board" "$in" "$out"
-msg "booting it again with pru_sim for the Cookbook's rpmsg example (the kernel's pru_rproc cannot kick)"
-PRUKIT_VM_BOOT=pru_sim "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/neopixel" "$in" "$out/rpmsg"
-mv "$out/rpmsg/dmesg.txt" "$out/dmesg-rpmsg.txt"
-mv "$out"/rpmsg/* "$out/"
-rmdir "$out/rpmsg"
 
 "$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/trace.bin" --events "$out/neopixel.events" \
 	--vcd "$out/neopixel.vcd"
