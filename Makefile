@@ -15,7 +15,7 @@
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
 #   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]:
-#                         the kernel's own PRU drivers on the QEMU PRU-ICSS (rpmsg on pru_sim)
+#                         the kernel's own PRU drivers on the QEMU PRU-ICSS
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
 #   make demo             the emulated BeagleBone runs prukit's drivers and the Cookbook's
 #                         NeoPixel example, and shows what the pins did

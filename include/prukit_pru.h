@@ -21,7 +21,7 @@ struct rproc;
 /* AM335x GPIO banks a PRU can drive over OCP (prukit_pru_gpio_bank()) */
 #define PRUKIT_PRU_GPIO_BANKS		4
 
-/* Default for firmware answers: generous, because pru_sim runs slower. */
+/* Default for firmware answers: generous, for emulated PRUs too. */
 #define PRUKIT_PRU_TIMEOUT_MS		5000
 
 /**

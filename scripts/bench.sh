@@ -4,16 +4,19 @@
 # make bench: speed figures, measured, never asserted (these machines are
 # shared and noisy).  PRU time itself is exact and is not a benchmark.
 #   - prusim on one host core, both PRU cores busy (tests/prusim/bench.sh)
-#   - the simulator in the VM (Debian 6.1 under QEMU TCG) on both boots: the
-#     board path's PRU-ICSS in QEMU and the in-guest pru_sim, simulated
-#     cycles per second with both cores running blinky, beside the prusim
-#     tool on the host running the same firmware in the same run (the
-#     ratios); the PRU-consumer layer's command round trip in PRU cycles on
-#     both; rpmsg round trips and bytes per second through /dev/rpmsg_pru30
-#     (pru_sim)
+#   - the simulator in the VM (Debian 6.1 under QEMU TCG, the QEMU
+#     PRU-ICSS): simulated cycles per second with both cores running
+#     blinky, beside the prusim tool on the host running the same firmware
+#     in the same run (the ratio); the PRU-consumer layer's command round
+#     trip in PRU cycles; rpmsg echo round trips and bytes per second each
+#     way through /dev/rpmsg_pru30 on the kernel's pru_rproc with
+#     prukit_pru's kick, and simulated PRU cycles per round trip
 #   - PRU cycles the firmware spends per received and per sent rpmsg message
-#     (exact: counted by the simulator in tests/rpmsg-fw, not timed)
-#   - pru_sim's PRU -> ARM event latency in PRU cycles
+#     and from kick to kick (exact: counted by the simulator in
+#     tests/rpmsg-fw, not timed)
+#   - the PRU -> ARM event latency in PRU cycles (it reflects the emulation's
+#     rule of holding simulated time while the ARM has an interrupt it has
+#     not taken, not a board)
 #   - ws281x, 48 strings x 600 LEDs: the ARM's instructions per LED to
 #     convert a frame (callgrind, host build of drivers/ws281x/ws281x_conv.c)
 #     and the PRU cycles and frames per second of the real firmware in
@@ -52,7 +55,7 @@ grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
 out=$PRUKIT_TOP/out/bench
 mkdir -p "$out"
 # The simulator's speed, side by side: the same firmware (blinky on both
-# cores) in the host tool, then in the VM on both boots.
+# cores) in the host tool, then in the VM.
 host_mcps=$(python3 - "$PRUKIT_TOP/out/tools/prusim" "$PRUKIT_TOP/out/firmware" <<'PY'
 import json, resource, subprocess, sys
 prusim, fw = sys.argv[1:]
@@ -64,13 +67,10 @@ print("%.2f" % (res["cycles"] / (ru.ru_utime + ru.ru_stime) / 1e6))
 PY
 )
 echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
-for boot in board pru_sim; do
-	PRUKIT_VM_BOOT=$boot "$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" \
-		"" "$out/guest-$boot" >"$out/guest-$boot.log" 2>&1 ||
-		{ tail -n 20 "$out/guest-$boot.log"; die "the bench guest failed on the $boot boot"; }
-	grep -E '^(BENCH|INFO):' "$out/guest-$boot.log" || true
-done
-python3 - "$host_mcps" "$out/guest-board.log" "$out/guest-pru_sim.log" <<'PY'
+"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
+	>"$out/guest.log" 2>&1 || { tail -n 20 "$out/guest.log"; die "the bench guest failed"; }
+grep -E '^(BENCH|INFO):' "$out/guest.log" || true
+python3 - "$host_mcps" "$out/guest.log" <<'PY'
 import re, sys
 host = float(sys.argv[1])
 def mcps(log):
@@ -79,15 +79,14 @@ def mcps(log):
         if m:
             return float(m.group(1))
     return None
-board, sim = mcps(sys.argv[2]), mcps(sys.argv[3])
-if board and sim:
+board = mcps(sys.argv[2])
+if board:
     print("BENCH: simulator speed, blinky on both cores, PRU cycles per second of simulation "
-          "time: board path (QEMU device) %.1f M = %.0f%% of the host tool's %.1f M; in-guest "
-          "pru_sim %.1f M = %.1f%%; the board path is %.0fx pru_sim"
-          % (board, 100 * board / host, host, sim, 100 * sim / host, board / sim))
+          "time: the QEMU PRU-ICSS %.1f M = %.0f%% of the host tool's %.1f M"
+          % (board, 100 * board / host, host))
 PY
 # The long stop/start stress (900 cycles under rpmsg I/O, page_poison=1),
-# on the pru_sim boot, the only one with rpmsg (Documentation/pru_sim.rst):
+# on the kernel's pru_rproc with prukit_pru's kick (Documentation/rpmsg-kick.rst):
 # not a speed figure, but too long for make check.  Its checks count: a
 # FAIL line, a splat or a run that does not finish fails make bench.
 # About 1.2 s per cycle under TCG (900 cycles took 1108 s on 6.12), so the
@@ -95,7 +94,7 @@ PY
 mkdir -p "$out"
 rc=0
 for k in ${BENCH_STRESS_KVERS:-6.1 6.12}; do
-	PRUKIT_VM_BOOT=pru_sim VM_TIMEOUT=${VM_TIMEOUT:-4800} \
+	VM_TIMEOUT=${VM_TIMEOUT:-4800} \
 		"$PRUKIT_TOP/scripts/vm.sh" run "$k" \
 		"$PRUKIT_TOP/tests/vm/bench/stop-stress" "" "$out/stress-$k" \
 		>"$out/stress-$k.log" 2>&1 || rc=$?

@@ -16,8 +16,8 @@
 # setup (scripts/papt.sh).  7.2 because it is the QEMU of the distribution
 # this project builds on: its build dependencies are bookworm's own (later
 # QEMUs need a newer meson than bookworm has), and it is the release of
-# bookworm's own qemu-system-arm, which the VM used before.  Both of the
-# VM's boots use this binary (the pru_sim boot without pruss=on).
+# bookworm's own qemu-system-arm, which the VM used before.  The VM boots
+# this binary.
 #
 # Only the arm system emulator, with only the vexpress boards, no tools,
 # no docs (configure as below); about 10 CPU minutes cold.  The binary is

@@ -4,17 +4,11 @@
 # The prukit VM harness: boots Debian's own armmp kernels under QEMU (TCG,
 # 2 CPUs) with a Debian armhf userland, prukit's modules for that kernel,
 # its firmware, and the kernel's device tree of the board plus prukit's
-# overlays.  Two boots:
-#
-#  board    (the default) the board path: QEMU's vexpress-a15 with
-#	    prukit's AM335x PRU-ICSS (pruss=on; qemu/am335x_pruss.c, built by
-#	    scripts/qemu-build.sh), tests/vm/board/am335x-pruss.dtso, and the
-#	    kernel's own PRU drivers pruss, irq_pruss_intc and pru_rproc
-#	    (scripts/pru-kit.sh) under prukit's modules built as for a
-#	    BeagleBone kernel (kernels.sh --board).  pru_sim is not there.
-#  pru_sim  the in-guest simulator pru_sim (tests/vm/board/pruss-sim.dtso),
-#	    for rpmsg only: the kernel's pru_rproc has no kick.  A test that
-#	    needs it says "prukit-vm-boot: pru_sim" in a line of its own.
+# overlays: the board path - QEMU's vexpress-a15 with prukit's AM335x
+# PRU-ICSS (pruss=on; qemu/am335x_pruss.c, built by scripts/qemu-build.sh),
+# tests/vm/board/am335x-pruss.dtso, and the kernel's own PRU drivers pruss,
+# irq_pruss_intc and pru_rproc (scripts/pru-kit.sh) under prukit's modules
+# built as for a BeagleBone kernel (kernels.sh --board).
 #
 # The board is QEMU's vexpress-a15 rather than "virt": its RAM is at
 # 0x80000000, where an AM335x has its DDR, so PRU firmware sees the ARM's
@@ -24,19 +18,16 @@
 # addresses on an AM335x (GPIO banks at 0x44e07000, 0x4804c000, ...).
 #
 #   vm.sh run KVER SCRIPT [IN] [OUT]   (make vmrun)
-#	Boot SERIES KVER (5.10, 6.1, 6.12) on the board path (PRUKIT_VM_BOOT=
-#	pru_sim: on pru_sim), run SCRIPT as root in the guest
+#	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
 #	with /proc, /sys, /dev and debugfs mounted, prukit's modules loaded
 #	and the host directory IN unpacked at /in (also the working directory);
 #	copy the guest's /out to OUT; exit with the script's status.  With
 #	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
-#	For each kernel, boot once on the board path and once on pru_sim (if
-#	any of the tests wants it) and run the tests in tests/vm/cases and
+#	For each kernel, boot once and run the tests in tests/vm/cases and
 #	drivers/*/tests/vm/cases (all, or those named in TESTS), bring back
-#	their logs and artifacts to out/vm/<kernel>/ (out/vm/<kernel>-pru_sim/)
-#	and print "N passed, N failed" per kernel and overall.  VM_JOBS boots
+#	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N failed" per kernel and overall.  VM_JOBS boots
 #	run at once (default: one per host CPU).
 #
 # Either fails on any oops, BUG, WARN, lockdep report, hung task or
@@ -71,68 +62,41 @@ export QEMU_AUDIO_DRV=none
 # a write into a freed page is reported when the page is allocated again.
 splat_re='Oops|BUG:|WARNING:|Unable to handle kernel|Kernel panic|INFO: task .* blocked|possible (recursive|circular) locking|UBSAN:|refcount_t:|list_(add|del) corruption|general protection|stack-protector|pagealloc: memory corruption|blocked for more than'
 
-# The QEMU that boots both: Debian's 7.2 with prukit's PRU-ICSS
-# (scripts/qemu-build.sh; without pruss=on it is QEMU's own vexpress-a15).
+# The QEMU: Debian's 7.2 with prukit's PRU-ICSS (scripts/qemu-build.sh).
 qemu=
 qemu_binary() {
 	[ -n "$qemu" ] || qemu=$("$PRUKIT_TOP/scripts/qemu-build.sh") ||
 		die "building qemu-system-arm failed"
 }
 
-# build_prukit SERIES BOOT - cross-build prukit's modules (as the boot
-# needs them) and firmware for SERIES (no-ops when up to date) and set
-# kver, kdir and kimage.
+# build_prukit SERIES - cross-build prukit's modules (as for a BeagleBone
+# kernel, with the kernel's PRU drivers) and firmware for SERIES (no-ops
+# when up to date) and set kver, kdir and kimage.
 build_prukit() {
-	local series=$1 boot=$2 line flavour=()
+	local series=$1 line
 	line=$("$PRUKIT_TOP/scripts/fetch-kernels.sh" --image "$series")
 	read -r _ kver kdir _ kimage <<<"$line"
-	[ "$boot" = board ] && flavour=(--board)
-	"$PRUKIT_TOP/scripts/kernels.sh" --build-only "${flavour[@]}" "$series" >/dev/null ||
-		die "building prukit for $kver ($boot) failed (see out/kernels/$kver*/build.log)"
+	"$PRUKIT_TOP/scripts/kernels.sh" --build-only --board "$series" >/dev/null ||
+		die "building prukit for $kver failed (see out/kernels/$kver*/build.log)"
 	make -s -C "$PRUKIT_TOP" firmware >/dev/null
 	make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
 	qemu_binary
 }
 
-# boot_dir KVER BOOT - the directory of a kernel's boot: out/vm/<kernel>
-# for the board path, out/vm/<kernel>-pru_sim for pru_sim.
-boot_dir() {
-	if [ "$2" = board ]; then
-		echo "$PRUKIT_TOP/out/vm/$1"
-	else
-		echo "$PRUKIT_TOP/out/vm/$1-$2"
-	fi
-}
-
-# case_boot PATH - the boot a test case runs in: "pru_sim" if it says so
-# in a line "prukit-vm-boot: pru_sim", else "board".
-case_boot() {
-	if grep -q '^# prukit-vm-boot: *pru_sim *$' "$1"; then
-		echo pru_sim
-	else
-		echo board
-	fi
-}
-
 # The device tree: the kernel's own vexpress-a15 tree, the simulated
-# PRU-ICSS and board of the boot (tests/vm/board: the QEMU device's or
-# pru_sim's, both with a BeagleBone tree's labels), the test-only nodes
+# PRU-ICSS and board (tests/vm/board: the QEMU device's, with a BeagleBone
+# tree's labels), the test-only nodes
 # (tests/vm/overlays), then every overlay that "make overlays_install"
 # ships for the Black, exactly those blobs, then the user's own overlays
 # (make vmrun OVERLAY=...: space separated .dtso paths in
 # $PRUKIT_VM_OVERLAYS).  QEMU adds its virtio-mmio nodes when it boots.
 make_dtb() {
-	local dir=$1 boot=$2 o name base board
+	local dir=$1 o name base board=$VMDIR/board/am335x-pruss.dtso
 	mkdir -p "$dir"
 	rm -f "$dir"/*.dtbo
 	base=$(find "$kimage/usr/lib/linux-image-$kver" -name vexpress-v2p-ca15-tc1.dtb | head -n 1)
 	[ -n "$base" ] || die "no vexpress-v2p-ca15-tc1.dtb in linux-image-$kver"
 	local overlays=()
-	case $boot in
-	board) board=$VMDIR/board/am335x-pruss.dtso ;;
-	pru_sim) board=$VMDIR/board/pruss-sim.dtso ;;
-	*) die "no boot $boot" ;;
-	esac
 	"$PRUKIT_TOP/scripts/dtso-build.sh" "$board" "$dir/board.dtbo" ||
 		die "cannot build overlay $board"
 	overlays+=("$dir/board.dtbo")
@@ -173,11 +137,11 @@ make_dtb() {
 	msg "device tree: ${overlays[*]##*/}"
 }
 
-# make_initrd DIR MODE SCRIPT_OR_TESTS BOOT - the userland plus an archive
-# with the kernel's modules, prukit's modules (as the boot has them) and
-# firmware, and the test harness.
+# make_initrd DIR MODE SCRIPT_OR_TESTS - the userland plus an archive with
+# the kernel's modules, its PRU drivers, prukit's modules and firmware, and
+# the test harness.
 make_initrd() {
-	local dir=$1 mode=$2 arg=$3 boot=$4 stage=$1/stage rootfs m f d
+	local dir=$1 mode=$2 arg=$3 stage=$1/stage rootfs m f d
 	rootfs=$("$PRUKIT_TOP/scripts/vm-rootfs.sh")
 	rm -rf "$stage"
 	mkdir -p "$stage"/{prukit/tests,lib/firmware/prukit,lib/modules/"$kver"}
@@ -193,14 +157,10 @@ make_initrd() {
 	done <"$VMDIR/modules"
 	cp "$kimage/lib/modules/$kver"/modules.{order,builtin,builtin.modinfo} "$mods/" 2>/dev/null || true
 	mkdir -p "$mods/updates"
-	local builds=("$PRUKIT_TOP/out/kernels/$kver")
-	[ "$boot" = board ] &&
-		builds=("$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit")
-	for d in "${builds[@]}" "$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
+	for d in "$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit" \
+		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
 	done
-	# The board path has the kernel's PRU drivers and no pru_sim at all.
-	[ "$boot" = board ] && rm -f "$mods/updates/pru_sim.ko"
 	depmod -b "$stage" -e -E "$kdir/Module.symvers" "$kver" 2>"$dir/depmod.log"
 	if grep -q 'needs unknown symbol' "$dir/depmod.log"; then
 		cat "$dir/depmod.log" >&2
@@ -231,12 +191,9 @@ make_initrd() {
 		die "make udev_install server_install modprobe_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
-	local modules=$PRUKIT_VM_MODULES_SIM
-	[ "$boot" = board ] && modules=$PRUKIT_VM_MODULES_BOARD
 	{
 		echo "PRUKIT_MODE=$mode"
-		echo "PRUKIT_BOOT=$boot"
-		echo "PRUKIT_MODULES='$modules'"
+		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
 		[ "$mode" = test ] && echo "PRUKIT_TESTS='$arg'"
 		echo "PRUKIT_KVER='$kver'"
 	} >"$stage/prukit/config"
@@ -251,7 +208,7 @@ make_initrd() {
 	{ cat "$rootfs"; head -c "$pad" /dev/zero; cat "$dir/prukit.cpio"; } >"$dir/initrd"
 }
 
-# boot DIR IN OUT BOOT - boot the prepared kernel; console to DIR/console.log,
+# boot DIR IN OUT - boot the prepared kernel; console to DIR/console.log,
 # the QEMU PRU-ICSS's log of unmodelled accesses to DIR/qemu.log.
 # Returns the guest's exit status (or 124 on timeout, 125 without one).
 # Two disks carry the files: IN as a tar exactly its own size (busybox
@@ -259,10 +216,8 @@ make_initrd() {
 # for both directions cost the guest about 40 s per boot), and an empty
 # 256 MiB one the guest writes /out onto.
 boot() {
-	local dir=$1 in=$2 out=$3 bootkind=$4 indisk=$1/in.tar outdisk=$1/out.img rc
-	local board=(-M vexpress-a15)
-	[ "$bootkind" = board ] &&
-		board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log")
+	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
+	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log")
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then
@@ -340,11 +295,11 @@ kernel_log_clean() {
 	echo "PASS: $kver: kernel log clean (no oops, BUG, WARN, lockdep, hung task or page corruption)"
 }
 
-# Loaded in this order at boot (no udev loads them).  The board path: the
-# kernel's PRU drivers, the simulator's test port and the test consumer.
-# pru_sim: the rpmsg transport, prukit's modules and the test consumer.
-PRUKIT_VM_MODULES_BOARD=${PRUKIT_VM_MODULES_BOARD:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port pru_test_consumer}
-PRUKIT_VM_MODULES_SIM=${PRUKIT_VM_MODULES_SIM:-virtio_rpmsg_bus rpmsg_pru pru_sim pru_test_consumer}
+# Loaded in this order at boot (no udev loads them): the kernel's PRU
+# drivers (modprobe.d/prukit.conf brings prukit_pru with pru_rproc), the
+# rpmsg transport and rpmsg_pru, the simulator's test port and the test
+# consumer.
+PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port pru_test_consumer}
 
 cmd=${1:-}
 shift || true
@@ -356,19 +311,17 @@ run)
 	[ -z "$in" ] || in=$(cd "$in" && pwd)
 	out=${4:-$PRUKIT_TOP/out/vmrun}
 	[ -f "$script" ] || die "no such script: $script"
-	runboot=${PRUKIT_VM_BOOT:-board}
-	case $runboot in board | pru_sim) ;; *) die "PRUKIT_VM_BOOT is board or pru_sim" ;; esac
-	build_prukit "$series" "$runboot"
-	dir=$(boot_dir "$kver" "$runboot")/run
+	build_prukit "$series"
+	dir=$PRUKIT_TOP/out/vm/$kver/run
 	mkdir -p "$dir"
-	make_dtb "$dir/dtb" "$runboot"
-	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")" "$runboot"
+	make_dtb "$dir/dtb"
+	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")"
 	set +e
-	boot "$dir" "$in" "$out" "$runboot" >&2
+	boot "$dir" "$in" "$out" >&2
 	rc=$?
 	kernel_log_clean "$dir" "$out" >&2 || rc=1
 	set -e
-	msg "vmrun: $kver ($runboot), script exit status $rc, $(cat "$dir/seconds") s; /out in $out"
+	msg "vmrun: $kver, script exit status $rc, $(cat "$dir/seconds") s; /out in $out"
 	exit "$rc"
 	;;
 test)
@@ -381,56 +334,37 @@ test)
 		tests=$(awk '{ print $1 }' <<<"$cases" | paste -sd' ' -)
 	fi
 	[ -n "$tests" ] || die "no VM tests in tests/vm/cases or drivers/*/tests/vm/cases"
-	# Which boot each test needs
-	board_tests=
-	sim_tests=
 	for t in $tests; do
-		path=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
-		[ -n "$path" ] || die "no VM test $t"
-		if [ "$(case_boot "$path")" = pru_sim ]; then
-			sim_tests="$sim_tests $t"
-		else
-			board_tests="$board_tests $t"
-		fi
+		awk -v t="$t" '$1 == t { f = 1 } END { exit !f }' <<<"$cases" || die "no VM test $t"
 	done
-	board_tests=${board_tests# }
-	sim_tests=${sim_tests# }
 	# Every kernel's builds, device trees and initrds first, one at a time
 	# (builds use every CPU), then the boots, VM_JOBS at once, each into
 	# its directory's results; then, kernel by kernel, the host halves
 	# and the results.
 	declare -A kver_of kimage_of
-	boots=()
 	for series in $kvers; do
-		for b in board pru_sim; do
-			if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; fi
-			[ -n "$bt" ] || continue
-			build_prukit "$series" "$b"
-			kver_of[$series]=$kver
-			kimage_of[$series]=$kimage
-			dir=$(boot_dir "$kver" "$b")
-			mkdir -p "$dir"
-			make_dtb "$dir/dtb" "$b"
-			make_initrd "$dir" test "$bt" "$b"
-			boots+=("$series:$b")
-		done
+		build_prukit "$series"
+		kver_of[$series]=$kver
+		kimage_of[$series]=$kimage
+		dir=$PRUKIT_TOP/out/vm/$kver
+		mkdir -p "$dir"
+		make_dtb "$dir/dtb"
+		make_initrd "$dir" test "$tests"
 	done
 	running=0
-	for sb in "${boots[@]}"; do
-		series=${sb%%:*}
-		b=${sb#*:}
+	for series in $kvers; do
 		if [ "$running" -ge "$VM_JOBS" ]; then
 			wait -n || true
 			running=$((running - 1))
 		fi
 		kver=${kver_of[$series]}
 		kimage=${kimage_of[$series]}
-		dir=$(boot_dir "$kver" "$b")
-		msg "vmtest: booting $kver ($b)"
+		dir=$PRUKIT_TOP/out/vm/$kver
+		msg "vmtest: booting $kver"
 		rm -f "$dir/results" "$dir/seconds"
 		(
 			set +e
-			boot "$dir" "" "$dir/out" "$b" >"$dir/results"
+			boot "$dir" "" "$dir/out" >"$dir/results"
 			kernel_log_clean "$dir" "$dir/out" >>"$dir/results"
 			exit 0
 		) &
@@ -439,13 +373,10 @@ test)
 	wait
 	total_p=0
 	total_f=0
-	for sb in "${boots[@]}"; do
-		series=${sb%%:*}
-		b=${sb#*:}
+	for series in $kvers; do
 		kver=${kver_of[$series]}
-		dir=$(boot_dir "$kver" "$b")
+		dir=$PRUKIT_TOP/out/vm/$kver
 		label=$series
-		if [ "$b" = board ]; then bt=$board_tests; else bt=$sim_tests; label=$series/$b; fi
 		res=$dir/results
 		# kernel_log_clean's line comes last: without it the boot's
 		# results are not all there.
@@ -453,7 +384,7 @@ test)
 			echo "FAIL: $kver: the boot left no complete results (see $dir/console.log)" >>"$res"
 		# Host halves of tests, on what the guest brought back: each beside
 		# its case's cases/ directory, in host/ (vm_host_half).
-		for t in $bt; do
+		for t in $tests; do
 			host=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
 			[ -n "$host" ] || continue
 			host=$(vm_host_half "$host")

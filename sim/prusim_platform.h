@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * prusim platform glue: the simulator core is compiled unchanged in the Linux
- * kernel (pru_sim.ko) and in userspace (the prusim tool and its tests).  This
+ * kernel (its KUnit suite) and in userspace (the prusim tool and its tests,
+ * the QEMU PRU-ICSS).  This
  * header is the only place that knows the difference.
  */
 #ifndef _PRUSIM_PLATFORM_H

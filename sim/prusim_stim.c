@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
  * prusim input stimulus: the parser of the text format and the value
- * lookup, shared by the prusim tool and pru_sim.ko.
+ * lookup, shared by the prusim tool and the QEMU PRU-ICSS.
  *
  * The parser allocates nothing.  The embedder calls it twice: once without
  * a result to check the text and count its entries, then, with arrays of

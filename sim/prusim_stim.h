@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * prusim input stimulus: the text format of the prusim tool's --r31-0,
- * --r31-1 and --gpio-in files and of pru_sim's debugfs input files, parsed
+ * --r31-1 and --gpio-in files and of the QEMU PRU-ICSS's input files, parsed
  * without allocating, and the lookup of the value at a cycle.
  *
  * Format (Documentation/prusim.rst): one "CYCLE VALUE" pair per line

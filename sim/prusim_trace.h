@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
- * Binary pin trace: what pru_sim's debugfs file "trace" holds and what the
- * prusim tool reads (--trace-in) and writes (--trace-out).  Little endian.
+ * Binary pin trace: what the QEMU PRU-ICSS's "trace" holds (debugfs
+ * prusim/trace in the guest) and what the prusim tool reads (--trace-in)
+ * and writes (--trace-out).  Little endian.
  *
  * A header, then @count records in cycle order.  Cycles are absolute
  * simulator cycles; @origin is the cycle at which the last PRU core was
- * started (rproc start in pru_sim, 0 in the prusim tool), so that
+ * started (a core's start in the QEMU PRU-ICSS, 0 in the prusim tool), so that
  * "cycle - origin" compares runs made in different places.  @end is the
  * cycle up to which the trace is complete (the simulator's clock when the
  * trace was taken): pins keep their last level until then.

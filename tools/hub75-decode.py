@@ -3,7 +3,7 @@
 """Decode the pins of a HUB75 RGB LED matrix into the picture it shows.
 
 An independent model of the panel, fed with the pin changes recorded by
-pru_sim / prusim (binary trace, sim/prusim_trace.h) or with a list of
+the QEMU PRU-ICSS / prusim (binary trace, sim/prusim_trace.h) or with a list of
 (cycle, pin, level) changes.  Cycles are PRU cycles of 5 ns.
 
     hub75-decode.py TRACE --map pocketscroller|bone-r30|JSON|sig=pin,...

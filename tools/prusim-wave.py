@@ -4,7 +4,7 @@
 
 Input is the text event list the prusim tool writes with --events
 ("CYCLE PIN_NAME LEVEL" per line, cycles of 5 ns relative to the start of
-the firmware), e.g. converted from pru_sim's debugfs trace with
+the firmware), e.g. converted from the QEMU PRU-ICSS's trace with
     prusim --trace-in trace.bin --events trace.events
 
     prusim-wave.py EVENTS [--from CYCLE] [--cycles N] [--width COLUMNS]

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-2.0-only
 """Show the frames of WS281x ("NeoPixel") strings from recorded pins.
 
-The pins come from a VCD file, e.g. one made from pru_sim's trace with
+The pins come from a VCD file, e.g. one made from the QEMU PRU-ICSS's trace with
 "prusim --trace-in trace.bin --vcd trace.vcd".  Each frame is printed as a
 row of coloured blocks (24-bit colour terminals) and can be written as PNG
 pictures and a GIF.

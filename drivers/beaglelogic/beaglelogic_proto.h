@@ -30,7 +30,7 @@
  *	BL_FW_RUNNING (BL_ENOSTORER after about 0.5 s), answers, and
  *	samples.  On PRU1, @first_iep is the IEP counter at the first sample
  *	once the capture ended: it relates the samples to other PRU activity
- *	(pru_sim's stimulus origins, in tests).
+ *	(the simulator's stimulus origins, in tests).
  *  STOP (PRU0): ends a capture; answered once PRU1 stopped too.  A STOP
  *	without a capture is answered at once.
  *

@@ -173,8 +173,8 @@ static int hub75_start(struct hub75 *h)
 
 /*
  * Until the PRU shows @front: then the other buffer is free.  A refresh
- * takes its time in pru_sim: the wait is bounded by the control block's
- * timeout, beyond a whole refresh even there.
+ * takes its time under emulation: the wait is bounded by the control
+ * block's timeout, beyond a whole refresh even there.
  */
 static int hub75_wait_taken(struct hub75 *h)
 {

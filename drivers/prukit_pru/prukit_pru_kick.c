@@ -11,7 +11,7 @@
  * remote processor that lacks them both, as it appears (it is bound to
  * "pru-rproc"), and stays out of the way of one that has a kick; it does
  * not change the kernel or pru_rproc on disk.  The choice and the reasons
- * are in Documentation/prukit/rpmsg-kick.rst.
+ * are in Documentation/rpmsg-kick.rst.
  *
  * remoteproc gives each processor its own copy of the operations
  * (rproc_alloc() duplicates them, and pru_rproc itself sets ->load and

@@ -78,7 +78,7 @@ int main(void)
 		uint32_t res;
 
 		if (seq == last)
-			continue;	/* only reads: pru_sim sees a waiting core */
+			continue;	/* only reads: the simulator sees a waiting core */
 		last = seq;
 		switch (PRUKIT_CTRL_OPCODE(cmd)) {
 		case PRU_TEST_CMD_PING:

@@ -2,7 +2,7 @@
 /*
  * input-echo: copy the core's direct inputs (R31 bits 0..15) to its direct
  * outputs (R30 bits 0..15) in a tight loop, forever.  The tests feed the
- * same stimulus to pru_sim in a VM and to the prusim tool on the host and
+ * same stimulus to the QEMU PRU-ICSS in a VM and to the prusim tool on the host and
  * compare the output pin traces cycle by cycle.
  */
 #include <stdint.h>

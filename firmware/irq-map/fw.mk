@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause
-# irq-map: a .pru_irq_map and nothing else, for pru_sim's VM tests.  PRU0's
+# irq-map: a .pru_irq_map and nothing else, for the VM tests.  PRU0's
 # routes event 20 to channel 5, host 5: the test consumer's device tree
 # node has event 20 on channel 4, host 4, so the start must fail.  PRU1's
 # routes the free event 22 to channel 6, host 6, which must appear while the

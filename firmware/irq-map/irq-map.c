@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-only OR BSD-2-Clause
 /*
  * irq-map: route one system event through .pru_irq_map (set per core in
- * fw.mk), strobe it once, halt.  The PRU remoteproc driver - and pru_sim,
- * which models it - maps the route when the core starts and disposes of it
- * when the core stops; a route that conflicts with one in use fails the
- * start.
+ * fw.mk), strobe it once, halt.  The PRU remoteproc driver maps the route
+ * when the core starts and disposes of it when the core stops; a route that
+ * conflicts with one in use fails the start.
  */
 #include <stdint.h>
 #include <prukit/irq_map.h>

@@ -2,7 +2,7 @@
 /*
  * irq-test: strobe INTC system event IRQ_TEST_EVENT through R31
  * IRQ_TEST_COUNT times, IRQ_TEST_GAP cycles apart, then halt.  The host
- * side maps the event to an ARM host interrupt (pru_sim's VM tests do it
+ * side maps the event to an ARM host interrupt (the VM tests do it
  * from the device tree of a test consumer) and counts what arrives.  Each
  * strobe also toggles R30 bit 0, so the pin trace shows when it happened.
  */

@@ -8,7 +8,7 @@
  * firmware without any kick, DMA buffers the PRU reads and writes over OCP,
  * and a PRU -> ARM event from its own "interrupts-extended".
  *
- * sysfs, on the platform device (Documentation/ABI/testing/sysfs-driver-pru_sim):
+ * sysfs, on the platform device (a test module; not installed on boards):
  *   firmware   (rw) firmware "state" starts ("firmware-name" by default)
  *   state      (rw) "running" or "offline"; write "start" or "stop"
  *   ping       (wo) any write: one PING command; reads of pings (ro)

@@ -212,7 +212,7 @@ roundtrip uart --pru0 "$out/uart.pru0.elf"
 roundtrip toggle --pru0 "$out/toggle.pru0.elf" --max-cycles 40
 roundtrip gpio --pru0 "$out/gpio.pru0.elf"
 
-# A trace whose origin is not 0 (as pru_sim writes them): times relative to
+# A trace whose origin is not 0 (as the QEMU PRU-ICSS writes them): times relative to
 # it, changes before it give the levels at time 0 of the VCD.
 d=$tdir/pins
 tc patch "$d.trace" "$d.origin.trace" origin=2

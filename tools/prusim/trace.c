@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
- * Binary pin traces (the format of sim/prusim_trace.h, written by pru_sim
+ * Binary pin traces (the format of sim/prusim_trace.h, written by the QEMU PRU-ICSS
  * and by --trace-out, read by --trace-in) and the text event list of
  * --events: one "CYCLE PIN_NAME LEVEL" line per change, CYCLE relative to
  * the origin, so that lists from different places compare with diff.

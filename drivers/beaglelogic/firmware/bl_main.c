@@ -6,7 +6,7 @@
  * sampler (the loops are in bl_sample.S), built for PRU0 the storer
  * (bl_store.S).  Here: the command loop of each, and the checks of START's
  * parameters.  Both poll their control block with loads only, so that an
- * idle core costs pru_sim nothing.
+ * idle core costs the simulator nothing.
  */
 #include <stddef.h>
 #include <stdint.h>

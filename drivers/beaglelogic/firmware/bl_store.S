@@ -18,7 +18,7 @@
  * a trigger (c->trig_mode) the capture ends BL_STORE_DONE @trig_post
  * blocks after the trigger's (beaglelogic_proto.h).
  *
- * Timing (pru_sim's defaults; the sampler publishes a block every 32
+ * Timing (the simulator's defaults; the sampler publishes a block every 32
  * cycles at 100 Msps in 16-bit units, and each bank holds a block for 64):
  * an idle poll round takes 8 cycles (XIN, two compares, the command
  * word's load: 3, compare, jump), a block 13 (XIN, compare, SBBO of 32

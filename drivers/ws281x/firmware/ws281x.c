@@ -194,7 +194,7 @@ int main(void)
 		int go;
 
 		if (PRUKIT_CTRL_SEQ(c->hdr.command) == last)
-			continue;	/* only reads: pru_sim sees a waiting core */
+			continue;	/* only reads: the simulator sees a waiting core */
 		go = take(c, &last, &job, &event, &gpio);
 		if (go && !c->frames)
 			first_low(&job);

@@ -23,33 +23,33 @@
  * Every edge instruction is issued at a deadline taken from the core's
  * CYCLE counter (wait_until below), not after a count of the instructions
  * before it: an OCP read or a GPIO store that stalls the core for a few
- * cycles more or less than pru_sim assumes moves no edge, as long as it
+ * cycles more or less than the simulator assumes moves no edge, as long as it
  * ends before the deadline.  The slack left before each deadline is the
  * margin (below).
  *
- * Pin kinds and their offset from S (pru_sim's defaults):
+ * Pin kinds and their offset from S (the simulator's defaults):
  *
  *   R30 bits          0 cycles: "mov r30" is the edge, exact on a board too.
  *   GPIO bank b       each edge writes SETDATAOUT (rise: the bank's mask) or
  *                     CLEARDATAOUT (at +70: mask & ~ones, at +140: mask) of
  *                     banks 0, 1, 2, 3 in this order, right after the R30
  *                     edge, whatever the masks (a write of 0 changes nothing),
- *                     so each bank's edges keep one distance from S.  pru_sim
- *                     lands a GPIO store gpio_write_latency (17) cycles after
+ *                     so each bank's edges keep one distance from S.  The
+ *                     simulator lands a GPIO store gpio_write_latency (17) cycles after
  *                     the bank accepts it and accepts one 32-bit write per
  *                     gpio_write_interval (8) cycles, the core stalling on a
  *                     busy path: bank b's store issues at S+1+8b (the first
  *                     one finds the path free), so bank b's edges land at
  *                     S + 18 + 8b: 18, 26, 34, 42 cycles.
  *
- * Latency and interval are guesses pru_sim makes configurable (-C): on a
+ * Latency and interval are guesses the simulator makes configurable (-C): on a
  * board L4 writes cross the interconnect with a latency that varies with
  * traffic, so the edges of GPIO strings may move by a few cycles (tens of
  * ns, well inside the WS281x's +-150 ns) from one edge to the next; R30
  * edges are exact to the cycle.  The GPIO pins must be outputs (OE), set
  * by whoever muxes them: the firmware only writes SET/CLEARDATAOUT.
  *
- * Cycle budget of a slot, GPIO variant (pru_sim's defaults):
+ * Cycle budget of a slot, GPIO variant (the simulator's defaults):
  *   S+0..25    R30 edge + 4 stores (the 2nd..4th wait for the path: 25)
  *   S+26..36   the next edges' values (10), next deadline (1)
  *   S+37..69   wait_until: 10 + 23 cycles of slack

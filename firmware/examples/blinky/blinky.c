@@ -2,7 +2,7 @@
 /*
  * blinky: count in binary on R30 bits 0..7, one step every BLINKY_STEP
  * cycles, forever.  Bit 0 is a square wave of 2 * BLINKY_STEP cycles, bit 1
- * of twice that, and so on: on a scope (or in pru_sim's pin trace) the eight
+ * of twice that, and so on: on a scope (or in the simulator's pin trace) the eight
  * outputs form the familiar counter staircase.
  *
  *   PRU0 R30 bits 0..7: P9_31 P9_29 P9_30 P9_28 P9_42 P9_27 P9_41 P9_25

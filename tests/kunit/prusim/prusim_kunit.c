@@ -11,7 +11,7 @@
  * tests/kunit/prusim/gen.sh generates from the validation programs (see
  * gen.py and prusim_kunit.h).  Each program runs three times, as the tool
  * runs it (idle skipping, one prusim_run() call between two events), with
- * skipping off, and skipping in short slices as pru_sim runs it; the three
+ * skipping off, and skipping in short slices as the QEMU PRU-ICSS runs it; the three
  * results must be identical.  Every check is also made once with its
  * expected value changed, and must then fail: no check passes vacuously.
  */
@@ -220,7 +220,7 @@ static void pk_set_config(struct prusim_config *cfg, const struct prusim_kunit_c
 	}
 }
 
-/* Parse the stimulus of @port the way the tool and pru_sim do (two passes) */
+/* Parse the stimulus of @port the way the tool and the QEMU PRU-ICSS do (two passes) */
 static int pk_load_stim(struct kunit *test, struct pk_run *r, const struct prusim_kunit_case *c,
 			unsigned int port)
 {

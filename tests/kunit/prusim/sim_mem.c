@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-only
 /*
  * sim/prusim_mem.c, compiled unchanged into the prusim KUnit suite (its own
- * object here, so that it is not shared with the pru_sim module's).
+ * object here, so that it is not shared with another module's).
  */
 #include "../../../sim/prusim_mem.c"

@@ -30,34 +30,28 @@ done_testing() {
 }
 
 # The simulated PRU-ICSS's debugfs directory: the QEMU device's test port
-# on the board path (tests/kmod/prusim_port.c), pru_sim's on the pru_sim boot.
+# (tests/kmod/prusim_port.c).
 sim_dir() {
-	local d
-	for d in /sys/kernel/debug/prusim/ /sys/kernel/debug/pru_sim/*/; do
-		[ -e "$d/stats" ] && { echo "${d%/}"; return 0; }
-	done
-	return 1
+	[ -e /sys/kernel/debug/prusim/stats ] && echo /sys/kernel/debug/prusim
 }
 
 # board_path - true if both PRU cores are bound to the kernel's own
-# pru-rproc driver (the board path) and pru_sim is not loaded.
+# pru-rproc driver (the board path).
 board_path() {
 	local c
 	for c in 4a334000.pru 4a338000.pru; do
 		[ "$(basename "$(readlink -f "/sys/bus/platform/devices/$c/driver")")" = pru-rproc ] ||
 			return 1
 	done
-	! grep -q "^pru_sim " /proc/modules
 }
 
 # check_board_path - the check every board-path test makes first
 check_board_path() {
-	check "PRU0 and PRU1 are bound to the kernel's pru-rproc; pru_sim is not loaded" board_path
+	check "PRU0 and PRU1 are bound to the kernel's pru-rproc" board_path
 }
 
 # pru_rproc N - the remoteproc sysfs directory of PRU N (its device is
-# 4a334000.pru / 4a338000.pru on the board path, pru@34000 / pru@38000 under
-# pru_sim).
+# 4a334000.pru / 4a338000.pru).
 pru_rproc() {
 	local iram r
 	case $1 in 0) iram=34000 ;; 1) iram=38000 ;; *) return 1 ;; esac
