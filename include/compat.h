@@ -38,23 +38,12 @@
 #endif
 
 /*
- * v5.13: rproc_ops.da_to_va() gained "bool *is_iomem" ("remoteproc: add
- * is_iomem to da_to_va").  Declare the op with PRUKIT_RPROC_DA_TO_VA_ARGS;
- * the body uses rproc, da and len only (callers preset *is_iomem to false).
- */
-#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 13, 0)
-#define PRUKIT_RPROC_DA_TO_VA_ARGS \
-	struct rproc *rproc, u64 da, size_t len, bool *is_iomem
-#else
-#define PRUKIT_RPROC_DA_TO_VA_ARGS \
-	struct rproc *rproc, u64 da, size_t len
-#endif
-
-/*
  * v5.11: rproc_set_firmware() ("remoteproc: Add a rproc_set_firmware()
- * API").  Before it, do what remoteproc's sysfs "firmware" store does.
+ * API"); TI's 5.10 has it too (backported).  Decided by the kernel's
+ * <linux/remoteproc.h> (the top-level Kbuild: PRUKIT_HAVE_RPROC_SET_FIRMWARE).
+ * Without it, do what remoteproc's sysfs "firmware" store does.
  */
-#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#ifdef PRUKIT_HAVE_RPROC_SET_FIRMWARE
 #define prukit_rproc_set_firmware(rproc, name)	rproc_set_firmware(rproc, name)
 #else
 #include <linux/remoteproc.h>
@@ -100,13 +89,21 @@ irqreturn_t rproc_vq_interrupt(struct rproc *rproc, int vq_id);
  * rproc_da_to_va(): exported since v3.4 but declared only in
  * drivers/remoteproc/remoteproc_internal.h until v5.18 ("remoteproc: move
  * rproc_da_to_va declaration to remoteproc.h"); v5.13 added "bool
- * *is_iomem" (see PRUKIT_RPROC_DA_TO_VA_ARGS).
+ * *is_iomem" to it and to rproc_ops.da_to_va ("remoteproc: add is_iomem to
+ * da_to_va").  TI backported both into some of its 5.10 trees and not into
+ * others (5.10.100-ti has the declaration without is_iomem), so both are
+ * decided by the kernel's <linux/remoteproc.h> (the top-level Kbuild:
+ * PRUKIT_HAVE_RPROC_DA_TO_VA_DECL, PRUKIT_HAVE_RPROC_DA_TO_VA_IOMEM).
  */
-struct rproc;
-#if LINUX_VERSION_CODE < KERNEL_VERSION(5, 18, 0)
-void *rproc_da_to_va(PRUKIT_RPROC_DA_TO_VA_ARGS);
+#include <linux/types.h>
+#ifndef PRUKIT_HAVE_RPROC_DA_TO_VA_DECL
+#ifdef PRUKIT_HAVE_RPROC_DA_TO_VA_IOMEM
+void *rproc_da_to_va(struct rproc *rproc, u64 da, size_t len, bool *is_iomem);
+#else
+void *rproc_da_to_va(struct rproc *rproc, u64 da, size_t len);
 #endif
-#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 13, 0)
+#endif
+#ifdef PRUKIT_HAVE_RPROC_DA_TO_VA_IOMEM
 #define prukit_rproc_da_to_va(rproc, da, len, is_iomem) \
 	rproc_da_to_va(rproc, da, len, is_iomem)
 #else
