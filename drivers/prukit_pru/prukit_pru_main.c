@@ -2,8 +2,8 @@
 /*
  * prukit_pru - the one way every prukit driver takes and uses a PRU core
  *
- * The contract (Documentation/writing-a-driver.rst), the same on a board
- * and under pru_sim:
+ * The contract (Documentation/writing-a-driver.rst), the same on every
+ * kernel a board runs:
  *  - the driver's node names its cores in "ti,prus" (and their firmware in
  *    "firmware-name"); devm_prukit_pru_get() holds one, exclusively, until
  *    the driver unbinds, and the driver core unbinds the driver before the
@@ -96,43 +96,84 @@ static void prukit_pru_unclaim(struct rproc *rproc)
 }
 
 /*
+ * A core whose node, or an ancestor's (its PRUSS, the target module), is
+ * disabled never gets a device: say which node, rather than wait for it.
+ */
+static struct device_node *prukit_pru_disabled(struct device_node *np)
+{
+	struct device_node *p;
+
+	for (p = of_node_get(np); p; p = of_get_next_parent(p))
+		if (!of_device_is_available(p))
+			return p;
+	return NULL;
+}
+
+/*
  * The core's remote processor, from whichever driver owns the core: the
  * kernel's PRU remoteproc driver hands its cores out with pru_rproc_get(),
- * which answers -ENODEV for a core that is not its own (pru_sim's, say);
- * those are found with rproc_get_by_phandle().  Nothing registered yet:
- * -EPROBE_DEFER; a core bound to a driver that is no remote processor (UIO):
- * a clear error.
+ * which answers -ENODEV for a core that is not its own (another remoteproc
+ * driver's); those, and every core on kernels without pru_rproc_get(), are
+ * found with rproc_get_by_phandle().  Each way it can fail ends in a
+ * message that says which and what to do: a disabled node (-ENODEV), a
+ * core bound to a driver that is no remote processor, UIO's say (-EBUSY),
+ * and, as a deferral's reason (devices_deferred), a core no driver has
+ * taken yet (pru_rproc not loaded).
  */
 static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node *np)
 {
 	struct device *dev = pru->dev;
+	struct device_node *off;
 	struct platform_device *pdev;
+	const char *drv = NULL;
 	struct rproc *rproc;
+
+	off = prukit_pru_disabled(np);
+	if (off) {
+		const char *status;
+
+		if (of_property_read_string(off, "status", &status))
+			status = "?";
+		dev_err(dev, "PRU %pOF is disabled: %pOF has status \"%s\"; enable it in an overlay (prukit's set status = \"okay\" on pruss_tm, pruss, pruss_intc and the cores)\n",
+			np, off, status);
+		of_node_put(off);
+		return ERR_PTR(-ENODEV);
+	}
 
 	rproc = prukit_pru_rproc_get(dev->of_node, pru->index);
 	if (!IS_ERR(rproc)) {
 		pru->via_pru_rproc = true;
 		return rproc;
 	}
-	if (PTR_ERR(rproc) != -ENODEV)
+	if (PTR_ERR(rproc) != -ENODEV && PTR_ERR(rproc) != -EPROBE_DEFER) {
+		dev_err(dev, "PRU %pOF not available: pru_rproc_get() says %pe%s\n", np, rproc,
+			PTR_ERR(rproc) == -EBUSY ? " (another driver holds it)" : "");
 		return rproc;
-
-	rproc = rproc_get_by_phandle(np->phandle);
-	if (rproc)
-		return rproc;
+	}
+	if (PTR_ERR(rproc) == -ENODEV) {
+		rproc = rproc_get_by_phandle(np->phandle);
+		if (rproc)
+			return rproc;
+	}
 
 	pdev = of_find_device_by_node(np);
 	if (pdev) {
-		const char *drv = pdev->dev.driver ? pdev->dev.driver->name : NULL;
-
-		put_device(&pdev->dev);
-		if (drv) {
-			dev_err(dev, "PRU %pOF is bound to %s, which is no remote processor driver\n",
-				np, drv);
-			return ERR_PTR(-EBUSY);
-		}
+		device_lock(&pdev->dev);
+		if (pdev->dev.driver && strcmp(pdev->dev.driver->name, "pru-rproc"))
+			drv = pdev->dev.driver->name;
+		device_unlock(&pdev->dev);
 	}
-	return ERR_PTR(-EPROBE_DEFER);
+	if (drv) {
+		dev_err(dev, "PRU %pOF is bound to %s, which is no remote processor driver: unbind it (echo %s > /sys/bus/platform/drivers/%s/unbind) or drop the overlay that gives it the core\n",
+			np, drv, dev_name(&pdev->dev), drv);
+		put_device(&pdev->dev);
+		return ERR_PTR(-EBUSY);
+	}
+	if (pdev)
+		put_device(&pdev->dev);
+	return ERR_PTR(dev_err_probe(dev, -EPROBE_DEFER,
+				     "PRU %pOF not available: no remote processor driver has it yet (is pru_rproc loaded? modprobe pru_rproc)\n",
+				     np));
 }
 
 static void prukit_pru_release(void *data)
@@ -159,8 +200,9 @@ static void prukit_pru_release(void *data)
  * 32-bit DMA mask: the PRU's OCP master port addresses 32 bits.
  *
  * Return: the core, or an ERR_PTR(): -EPROBE_DEFER until the core's driver
- * registered it, -EBUSY if another driver holds it, -EINVAL for a bad
- * "ti,prus" (each with a message; defer is silent).
+ * registered it, -ENODEV for a disabled core, -EBUSY if another driver holds
+ * it, -EINVAL for a bad "ti,prus" (each with a message; a deferral's is its
+ * reason in devices_deferred).
  */
 struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 {
@@ -179,13 +221,9 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 	if (!np)
 		return ERR_PTR(dev_err_probe(dev, -EINVAL, "no \"ti,prus\" entry %u\n", index));
 	rproc = prukit_pru_find(pru, np);
-	if (IS_ERR(rproc)) {
-		ret = PTR_ERR(rproc);
-		dev_err_probe(dev, ret, "PRU %pOF not available\n", np);
-		of_node_put(np);
-		return ERR_PTR(ret);
-	}
 	of_node_put(np);
+	if (IS_ERR(rproc))
+		return ERR_CAST(rproc);
 	pru->rproc = rproc;
 	if (!pru->via_pru_rproc) {
 		ret = prukit_pru_claim(dev, rproc);
@@ -365,9 +403,8 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_running);
  *	at 0x10000)
  * @len: bytes
  *
- * The real PRU remoteproc driver hands out ioremapped (Device) memory,
- * pru_sim plain RAM: access it only with readl()/writel()/memcpy_toio()/
- * memcpy_fromio(), so that what passes under pru_sim works on a board.
+ * The PRU remoteproc driver hands out ioremapped (Device) memory: access
+ * it only with readl()/writel()/memcpy_toio()/memcpy_fromio().
  * Valid while the firmware is loaded.
  *
  * Return: the mapping, or NULL if @da..@da+@len is no memory of the core.
@@ -421,8 +458,8 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_check);
 
 /*
  * Poll the status word until @done says so, the firmware stops or time
- * runs out.  Polls every 100-200 us; pru_sim answers within about a
- * millisecond of host time, a real PRU within microseconds.
+ * runs out.  Polls every 100-200 us; the emulated PRU-ICSS answers within
+ * about a millisecond of host time, a real PRU within microseconds.
  */
 static int prukit_pru_poll(struct prukit_pru *pru, void __iomem *ctrl, u32 want_seq,
 			   bool any_seq, unsigned int timeout_ms, const char *what, u32 *status)
@@ -457,7 +494,7 @@ static int prukit_pru_poll(struct prukit_pru *pru, void __iomem *ctrl, u32 want_
  * prukit_pru_ctrl_wait_ready() - wait until the firmware polls its block
  * @pru: the core
  * @ctrl: the control block
- * @timeout_ms: how long (PRUKIT_PRU_TIMEOUT_MS suits pru_sim as well)
+ * @timeout_ms: how long (PRUKIT_PRU_TIMEOUT_MS suits emulation as well)
  *
  * Return: 0; -ETIMEDOUT (logged with the firmware's name) if the firmware
  * never set PRUKIT_CTRL_READY; -EPIPE if the core stopped.
@@ -561,34 +598,47 @@ static const u32 prukit_pru_gpio_banks[PRUKIT_PRU_GPIO_BANKS] = {
  *
  * For firmware that drives GPIO pins itself, through the bank's
  * SETDATAOUT/CLEARDATAOUT registers: the driver owns the pins through
- * gpiolib and tells the firmware the bank.  On a board the bank is the
- * controller's translated address; pru_sim's simulated banks
- * ("prukit,am335x-gpio-sim") carry their AM335x address in "reg" without a
- * translation to CPU addresses (the simulated board is not on the CPU's
- * bus).
+ * gpiolib and tells the firmware the bank: the controller's translated
+ * address.
  *
  * Return: the bank, 0..3, or -EINVAL if @np is no AM335x GPIO bank.
  */
 int prukit_pru_gpio_bank(struct device_node *np)
 {
 	struct resource res;
-	u64 addr = OF_BAD_ADDR;
-	const __be32 *reg;
 	unsigned int b;
 
-	if (of_device_is_compatible(np, "prukit,am335x-gpio-sim")) {
-		reg = of_get_address(np, 0, NULL, NULL);
-		if (reg)
-			addr = of_read_number(reg, of_n_addr_cells(np));
-	} else if (!of_address_to_resource(np, 0, &res)) {
-		addr = res.start;
-	}
+	if (of_address_to_resource(np, 0, &res))
+		return -EINVAL;
 	for (b = 0; b < PRUKIT_PRU_GPIO_BANKS; b++)
-		if (addr == prukit_pru_gpio_banks[b])
+		if (res.start == prukit_pru_gpio_banks[b])
 			return b;
 	return -EINVAL;
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_gpio_bank);
+
+/*
+ * Only hosts 2..9 of the PRUSS INTC reach the ARM (host_intr0..7); hosts 0
+ * and 1 are the PRUs' own R31 bits.  pruss_intc maps any host below 10, so
+ * an event routed to 0 or 1 would map and never arrive: refuse it here.
+ */
+static int prukit_pru_event_host(struct device *dev, const char *name)
+{
+	struct of_phandle_args spec;
+	int index = 0, ret = 0;
+
+	if (name)
+		index = of_property_match_string(dev->of_node, "interrupt-names", name);
+	if (index < 0 || of_irq_parse_one(dev->of_node, index, &spec))
+		return 0;	/* of_irq_get*() below says what is missing */
+	if (of_device_is_compatible(spec.np, "ti,pruss-intc") && spec.args_count == 3 &&
+	    (spec.args[2] < 2 || spec.args[2] > 9))
+		ret = dev_err_probe(dev, -EINVAL,
+				    "PRU event %u%s%s is routed to host %u, which no ARM interrupt receives: route it to a host of 2..9 (PRU_EVTOUT0..7)\n",
+				    spec.args[0], name ? " " : "", name ?: "", spec.args[2]);
+	of_node_put(spec.np);
+	return ret;
+}
 
 /**
  * devm_prukit_pru_request_irq() - request a PRU -> ARM event of the node
@@ -605,7 +655,8 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_gpio_bank);
  * disposes of when the core stops.
  *
  * Return: the Linux interrupt number, or a negative errno (-EPROBE_DEFER
- * until the INTC is there).
+ * until the INTC is there, -EINVAL for an event routed to a host the ARM
+ * does not receive).
  */
 int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 				irq_handler_t handler, irq_handler_t thread_fn,
@@ -613,6 +664,9 @@ int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 {
 	int irq, ret;
 
+	ret = prukit_pru_event_host(dev, name);
+	if (ret)
+		return ret;
 	irq = name ? of_irq_get_byname(dev->of_node, name) : of_irq_get(dev->of_node, 0);
 	if (irq <= 0)
 		return dev_err_probe(dev, irq ?: -ENXIO, "no PRU event interrupt %s\n",
