@@ -17,8 +17,7 @@
 #     signals and GPIOs its "prukit-pins:" lines name are muxed to the right
 #     mode by a pinctrl-single group some node's pinctrl-0 applies, r31
 #     (input) pads have INPUT_EN, every pad is a known AM335x pad and appears
-#     once.  The table's R30 rows against pru_sim's pads; its GPIO rows
-#     against the gpio-line-names of the board trees of step 4 and the
+#     once.  The table's GPIO rows against the gpio-line-names of the board trees of step 4 and the
 #     kernel's own pinmux comments.
 #  3. Documentation/devicetree/bindings/**/*.yaml (N >= 0): yamllint,
 #     dt-doc-validate, and the examples compiled and checked with dt-validate,
@@ -704,62 +703,6 @@ for s in $SERIES; do
 	fi
 done
 
-# pru_sim's own table of PRU outputs and their pads (which R30 bits reach
-# the simulated board's pins, drivers/pru_sim/pru_sim_board.c) must say what
-# the pin table says: the same (core, bit, pad, mode) for every R30 signal
-# (the table's r31 and GPIO rows are not pru_sim's business: it models GPIO
-# banks, not which pad carries which GPIO).
-# pin_table_vs_sim TSV C: prints the differences, exits non-zero if any.
-pin_table_vs_sim() {
-	python3 - "$1" "$2" <<'PY'
-import re, sys
-tsv, src = sys.argv[1], sys.argv[2]
-want = set()
-for line in open(tsv):
-    if line.startswith("#") or not line.strip():
-        continue
-    f = line.rstrip("\n").split("\t")
-    m = re.fullmatch(r"pru([01])_r30_(\d+)", f[5])
-    if m:
-        want.add((int(m[1]), int(m[2]), int(f[1], 16), int(f[4])))
-text = open(src).read()
-m = re.search(r"pru_sim_r30_pads\[PRUSIM_NUM_CORES\]\[32\] = \{(.*?)\n\};", text, re.S)
-if not m:
-    sys.exit("no pru_sim_r30_pads[][] table in " + src)
-body = re.sub(r"/\*.*?\*/", "", m[1], flags=re.S)
-have = set()
-for core, block in re.findall(r"\[([01])\] = \{(.*?)\n\t\}", body, re.S):
-    bit = 0
-    for d, off, mode in re.findall(r"(?:\[(\d+)\] = )?\{ (0x[0-9a-f]+), (\d) \}", block):
-        bit = int(d) if d else bit
-        have.add((int(core), bit, int(off, 16), int(mode)))
-        bit += 1
-for t in sorted(want - have):
-    print("pin table has pru%d_r30_%d on pad 0x%x mode %d; pru_sim does not" % t)
-for t in sorted(have - want):
-    print("pru_sim has pru%d_r30_%d on pad 0x%x mode %d; the pin table does not" % t)
-print("%d R30 signals" % len(want & have))
-sys.exit(1 if want != have or not want else 0)
-PY
-}
-SIM_PADS=$PRUKIT_TOP/drivers/pru_sim/pru_sim_board.c
-if pin_table_vs_sim "$PIN_TABLE" "$SIM_PADS" >"$WORK/pins/sim" 2>&1; then
-	pass "pin table and pru_sim's R30 pads agree ($(tail -n 1 "$WORK/pins/sim"))"
-else
-	fail "pin table and pru_sim's R30 pads (${SIM_PADS#"$PRUKIT_TOP"/}) differ:"
-	show "$WORK/pins/sim" 20
-fi
-# ... and that comparison can fail: pru_sim's table with one pad changed.
-sed 's/{ 0x994, 5 }/{ 0x998, 5 }/' "$SIM_PADS" >"$WORK/pins/sim-bad.c"
-if ! cmp -s "$SIM_PADS" "$WORK/pins/sim-bad.c" &&
-	! pin_table_vs_sim "$PIN_TABLE" "$WORK/pins/sim-bad.c" >"$WORK/pins/sim-bad" 2>&1 &&
-	grep -q "pru0_r30_1 on pad 0x994 mode 5; pru_sim does not" "$WORK/pins/sim-bad"; then
-	pass "self-test: a pru_sim table with P9_29's pad changed is caught"
-else
-	fail "self-test: a pru_sim table with P9_29's pad changed is not caught:"
-	show "$WORK/pins/sim-bad" 5
-fi
-
 # The pin check of each overlay's blob (the same for every series).
 for o in "${overlays[@]}"; do
 	[ "${OVL_OK[$o]}" = 1 ] || continue
@@ -1326,11 +1269,69 @@ for s in $SERIES; do
 	fi
 done
 
+# The "vring" interrupts of the PRU nodes (TI's binding; rpmsg's PRU -> ARM
+# event) are not in the mainline binding, whose PRU nodes have no interrupts.
+# An overlay that sets them says so in "prukit-vring: LABEL EVENT CHANNEL
+# HOST" lines; then exactly these three properties on exactly those nodes
+# are accepted from dt-validate, and their values are checked.
+VRING_PROPS="interrupts interrupt-names interrupt-parent"
+vring_lines() { sed -n 's|^[[:space:]/*]*prukit-vring:[[:space:]]*||p' "$1"; }
+
+# vring_allowed MERGED OVERLAY_SRC IN OUT: copy IN's messages to OUT except
+# those about nothing but the vring properties of a node "prukit-vring:"
+# names; prints how many were accepted.
+vring_allowed() {
+	local m=$1 src=$2 in=$3 out=$4 label nodes=
+	while read -r label _; do
+		nodes="$nodes $(fdtget -t s "$m" /__symbols__ "$label" 2>/dev/null)"
+	done < <(vring_lines "$src")
+	python3 - "$in" "$out" "$VRING_PROPS" $nodes <<'PY'
+import re, sys
+src, dst, props, nodes = sys.argv[1], sys.argv[2], set(sys.argv[3].split()), sys.argv[4:]
+names = {n.rsplit("/", 1)[-1] for n in nodes if n}
+kept, accepted = [], 0
+for msg in open(src):
+    first = msg.split("\\n", 1)[0]
+    # "PATH: msg", or "PARENT: NODE: msg" (a parent's schema about a child)
+    head, sep, _ = first.partition("'")
+    node = head.rstrip().rstrip(":").split(": ")[-1] if sep else ""
+    quoted = set(re.findall(r"'([^']+)'", first[len(head):]))
+    about = quoted - {"pinctrl-[0-9]+"}
+    if (node.rsplit("/", 1)[-1] in names and about and about <= props
+            and ("were unexpected" in first or "do not match any of the regexes" in first)):
+        accepted += 1
+    else:
+        kept.append(msg)
+open(dst, "w").writelines(kept)
+print(accepted)
+PY
+}
+
+# vring_values DTB OVERLAY_SRC NAME: each "prukit-vring:" node has exactly
+# the declared interrupt, named "vring", from the PRUSS's INTC.
+vring_values() {
+	local m=$1 src=$2 name=$3 label ev ch host path intc want got
+	intc=$(fdtget -t s "$m" /__symbols__ pruss_intc 2>/dev/null) || intc=
+	while read -r label ev ch host; do
+		path=$(fdtget -t s "$m" /__symbols__ "$label" 2>/dev/null) || path=
+		want="$ev $ch $host vring $(fdtget -t u "$m" "$intc" phandle 2>/dev/null || echo none)"
+		got="$(fdtget -t u "$m" "$path" interrupts 2>/dev/null || echo none)"
+		got="$got $(fdtget -t s "$m" "$path" interrupt-names 2>/dev/null || echo none)"
+		got="$got $(fdtget -t u "$m" "$path" interrupt-parent 2>/dev/null || echo missing)"
+		if [ -n "$path" ] && [ -n "$intc" ] && [ "$got" = "$want" ]; then
+			pass "$name: $label vring interrupt: event $ev, channel $ch, host $host of pruss_intc"
+		else
+			fail "$name: $label ($path) interrupts, interrupt-names, interrupt-parent are" \
+				"\"$got\", expected \"$want\" (pruss_intc's phandle last)"
+		fi
+	done < <(vring_lines "$src")
+}
+
 # check_merged SERIES BOARD OVERLAY: the checks of one overlay on one base
 # tree; the SUMMARY text goes to $WORK/summary.SERIES.BOARD.OVERLAY.
 check_merged() {
 	local s=$1 b=$2 o=$3 m=${MERGED[$1/$2/$3]:-} bm=$WORK/$1/$2.msgs ok=1
-	local name="$o on $s/$b" label prop want path got nbase nnew nexp=0 npins
+	local name="$o on $s/$b" label prop want path got nbase nnew nexp=0 npins nvring
 	if [ -z "$m" ]; then
 		fail "$name: fdtoverlay could not apply it:"
 		cat "$WORK/$s/$b+$o.dtb.why"
@@ -1345,6 +1346,13 @@ check_merged() {
 	else
 		new_msgs "$bm" "$m.msgs" "$m.new"
 		nbase=$(wc -l <"$bm")
+		if grep -q 'prukit-vring:' "$OVL_SRC/$o.dtso"; then
+			nvring=$(vring_allowed "$m" "$OVL_SRC/$o.dtso" "$m.new" "$m.new.kept")
+			mv "$m.new.kept" "$m.new"
+			pass "$name: dt-validate: $nvring message(s) about the vring interrupts alone," \
+				"accepted (prukit-vring:; not in the mainline binding)"
+			vring_values "$m" "$OVL_SRC/$o.dtso" "$name"
+		fi
 		nnew=$(wc -l <"$m.new")
 		if [ "$nnew" -eq 0 ]; then
 			pass "$name: dt-validate finds nothing new ($nbase messages in the base tree alone)"
@@ -1404,6 +1412,74 @@ for s in $SERIES; do
 		done
 	done
 done
+
+# ------------------------------------------------- vring base-tree fixtures
+
+# The rpmsg overlays on the PRU-ICSS of BeagleBoard's TI trees, written from
+# the facts (tests/overlays/bases/ti-pruss.dts.in): 5.10's has the vring
+# interrupts, which the overlay must leave as they are; 6.1's and 6.6's lack
+# them, and the overlay must add them.
+mkdir -p "$WORK/vring"
+vring_in=$FIXTURES/bases/ti-pruss.dts.in
+for base in ti-5.10 ti-6.1; do
+	d=$WORK/vring/$base
+	if [ "$base" = ti-5.10 ]; then
+		v0=$'\t\t\t\t\tinterrupt-parent = <\&pruss_intc>;\n\t\t\t\t\tinterrupts = <16 2 2>;\n\t\t\t\t\tinterrupt-names = "vring";'
+		v1=${v0/16 2 2/18 3 3}
+	else
+		v0= v1=
+	fi
+	awk -v n="$base" -v v0="$v0" -v v1="$v1" '
+		/^@VRING0@$/ { if (v0 != "") print v0; next }
+		/^@VRING1@$/ { if (v1 != "") print v1; next }
+		{ gsub(/@NAME@/, n); print }' "$vring_in" >"$d.dts"
+	if ! dtc -q -@ -I dts -O dtb -o "$d.dtb" "$d.dts" 2>"$d.log"; then
+		fail "vring fixture $base does not build:"
+		show "$d.log" 5
+		continue
+	fi
+	# the fixture itself: with the properties (5.10) or without (6.1)
+	got=$(fdtget -t s "$d.dtb" /ocp/target-module@4a300000/pruss@0/pru@34000 interrupt-names \
+		2>/dev/null || echo none)
+	case $base/$got in
+	ti-5.10/vring | ti-6.1/none) pass "vring fixture $base: pru0's interrupt-names is $got" ;;
+	*) fail "vring fixture $base: pru0's interrupt-names is $got" ;;
+	esac
+	for o in "${overlays[@]}"; do
+		grep -q 'prukit-vring:' "$OVL_SRC/$o.dtso" || continue
+		blob=$WORK/vring/$o.dtbo
+		[ -e "$blob" ] || "$DTSO_BUILD" "$OVL_SRC/$o.dtso" "$blob" >/dev/null 2>&1 ||
+			{ fail "$o: does not build for the vring fixtures"; continue; }
+		if fdtoverlay -i "$d.dtb" -o "$d+$o.dtb" "$blob" 2>"$d+$o.log"; then
+			vring_values "$d+$o.dtb" "$OVL_SRC/$o.dtso" "$o on the $base fixture"
+		else
+			fail "$o on the $base fixture: fdtoverlay could not apply it:"
+			show "$d+$o.log" 5
+		fi
+	done
+done
+
+# ... and the allowance takes nothing else: a message that also names another
+# property, or names a node no "prukit-vring:" line declares, stays.
+if [ -e "$WORK/vring/ti-6.1+PRUKIT-RPMSG-00A0.dtb" ]; then
+	st=$WORK/vring/selftest
+	{
+		echo "pruss@0: pru@34000: 'interrupt-names', 'interrupts' do not match any of the regexes: 'pinctrl-[0-9]+'"
+		echo "/x/pru@38000: Unevaluated properties are not allowed ('interrupts', 'prukit-selftest-bogus' were unexpected)"
+		echo "/x/pru@3c000: Unevaluated properties are not allowed ('interrupts' were unexpected)"
+		echo "/x/pru@34000: 'firmware-name' is a required property"
+	} >"$st.in"
+	n=$(vring_allowed "$WORK/vring/ti-6.1+PRUKIT-RPMSG-00A0.dtb" "$OVL_SRC/PRUKIT-RPMSG-00A0.dtso" \
+		"$st.in" "$st.out")
+	if [ "$n" = 1 ] && [ "$(wc -l <"$st.out")" -eq 3 ] && ! grep -q "pruss@0: pru@34000" "$st.out"; then
+		pass "self-test: the vring allowance takes the one vring-only message of four"
+	else
+		fail "self-test: the vring allowance took $n of 4 messages; kept:"
+		show "$st.out" 4
+	fi
+else
+	fail "self-test: no merged vring fixture to test the allowance on"
+fi
 
 # ------------------------------------------------------- pin-check self-tests
 
