@@ -30,6 +30,7 @@ DESTDIR ?=
 FIRMWARE_DIR ?= /lib/firmware
 UDEV_RULES_DIR ?= /etc/udev/rules.d
 MODPROBE_DIR ?= /lib/modprobe.d
+DEPMOD_DIR ?= /lib/depmod.d
 INCLUDE_DIR ?= /usr/include
 SBIN_DIR ?= /usr/sbin
 SYSTEMD_UNIT_DIR ?= /lib/systemd/system
@@ -38,7 +39,7 @@ BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install modprobe_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
+	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
 
 all: modules
 
@@ -102,6 +103,11 @@ $(BUILD)/udev/60-prukit.rules: FORCE
 
 FORCE:
 
+# depmod.d/prukit.conf: prukit's rpmsg_pru before TI's (see its comments);
+# run depmod afterwards (DKMS runs it when it installs the modules)
+depmod_install:
+	install -D -m 0644 $(CURDIR)/depmod.d/prukit.conf $(DESTDIR)$(DEPMOD_DIR)/prukit.conf
+
 # modprobe.d/prukit.conf: which module comes with which (see its comments)
 modprobe_install:
 	install -D -m 0644 $(CURDIR)/modprobe.d/prukit.conf $(DESTDIR)$(MODPROBE_DIR)/prukit.conf
@@ -129,7 +135,7 @@ server_install:
 	done
 
 install: modules_install firmware_install overlays_install udev_install headers_install \
-	server_install modprobe_install
+	server_install modprobe_install depmod_install
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh

@@ -91,6 +91,21 @@ build_variant() {
 		fail "build $kver ($variant), see $log"
 		return
 	fi
+	# The VM's stand-in for TI's rpmsg_pru (tests/kmod/ti): prukit's module
+	# name, so a build of its own.
+	if [ "$variant" = board ]; then
+		rm -rf "$out-ti"
+		mkdir -p "$out-ti"
+		cp "$PRUKIT_TOP"/tests/kmod/ti/* "$out-ti/"
+		if make -C "$kdir" M="$out-ti" ARCH=arm CROSS_COMPILE=$cross CC=${cross}gcc W=1 \
+			CONFIG_PRUKIT_TEST_MODULES=m -j"$(ncpus)" modules >"$out-ti/build.log" 2>&1 &&
+			[ -e "$out-ti/rpmsg_pru.ko" ] && ! grep -qi 'warning' "$out-ti/build.log"; then
+			pass "build $kver (TI's rpmsg_pru's stand-in for the VM; W=1, -Werror)"
+		else
+			grep -iE 'warning|error' "$out-ti/build.log" | head -n 10
+			fail "build $kver (TI's rpmsg_pru's stand-in), see $out-ti/build.log"
+		fi
+	fi
 
 	[ $build_only -eq 1 ] && return
 

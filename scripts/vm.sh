@@ -161,7 +161,16 @@ make_initrd() {
 		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
 	done
-	depmod -b "$stage" -e -E "$kdir/Module.symvers" "$kver" 2>"$dir/depmod.log"
+	# A stand-in for TI's own rpmsg_pru where TI's kernels have it, beside
+	# prukit's in updates/ (tests/vm/cases/71-rpmsg-ti-module)
+	mkdir -p "$mods/kernel/drivers/rpmsg"
+	cp "$PRUKIT_TOP/out/kernels/$kver-board-ti/rpmsg_pru.ko" "$mods/kernel/drivers/rpmsg/" ||
+		die "no stand-in for TI's rpmsg_pru (scripts/kernels.sh --board)"
+	# as "make install" leaves a board: depmod with prukit's depmod.d
+	make -s -C "$PRUKIT_TOP" depmod_install DESTDIR="$stage" >/dev/null ||
+		die "make depmod_install failed"
+	depmod -b "$stage" -C "$stage/lib/depmod.d" -e -E "$kdir/Module.symvers" "$kver" \
+		2>"$dir/depmod.log"
 	if grep -q 'needs unknown symbol' "$dir/depmod.log"; then
 		cat "$dir/depmod.log" >&2
 		die "modules for $kver have unresolved symbols"
