@@ -125,7 +125,6 @@ static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node 
 	struct device *dev = pru->dev;
 	struct device_node *off;
 	struct platform_device *pdev;
-	const char *drv = NULL;
 	struct rproc *rproc;
 
 	off = prukit_pru_disabled(np);
@@ -156,21 +155,23 @@ static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node 
 			return rproc;
 	}
 
+	/*
+	 * The core's driver, read as dev_driver_string() does (taking the
+	 * core's device lock here, in the consumer's probe, would order the
+	 * two devices' locks against the driver core's unbind of the core).
+	 */
 	pdev = of_find_device_by_node(np);
 	if (pdev) {
-		device_lock(&pdev->dev);
-		if (pdev->dev.driver && strcmp(pdev->dev.driver->name, "pru-rproc"))
-			drv = pdev->dev.driver->name;
-		device_unlock(&pdev->dev);
-	}
-	if (drv) {
-		dev_err(dev, "PRU %pOF is bound to %s, which is no remote processor driver: unbind it (echo %s > /sys/bus/platform/drivers/%s/unbind) or drop the overlay that gives it the core\n",
-			np, drv, dev_name(&pdev->dev), drv);
+		const struct device_driver *drv = READ_ONCE(pdev->dev.driver);
+
+		if (drv && strcmp(drv->name, "pru-rproc")) {
+			dev_err(dev, "PRU %pOF is bound to %s, which is no remote processor driver: unbind it (echo %s > /sys/bus/platform/drivers/%s/unbind) or drop the overlay that gives it the core\n",
+				np, drv->name, dev_name(&pdev->dev), drv->name);
+			put_device(&pdev->dev);
+			return ERR_PTR(-EBUSY);
+		}
 		put_device(&pdev->dev);
-		return ERR_PTR(-EBUSY);
 	}
-	if (pdev)
-		put_device(&pdev->dev);
 	return ERR_PTR(dev_err_probe(dev, -EPROBE_DEFER,
 				     "PRU %pOF not available: no remote processor driver has it yet (is pru_rproc loaded? modprobe pru_rproc)\n",
 				     np));
