@@ -27,8 +27,10 @@
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
 #	For each kernel, boot once and run the tests in tests/vm/cases and
 #	drivers/*/tests/vm/cases (all, or those named in TESTS), bring back
-#	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N failed" per kernel and overall.  VM_JOBS boots
-#	run at once (default: one per host CPU).
+#	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N
+#	failed" per kernel and overall.  A test that leaves files for a
+#	second boot (second_boot below) gets one, right after the first.
+#	VM_JOBS kernels boot at once (default: one per host CPU).
 #
 # Either fails on any oops, BUG, WARN, lockdep report, hung task or
 # poisoned page found written in the kernel log, on a register access the
@@ -271,11 +273,12 @@ boot() {
 	return "$rc"
 }
 
-# kernel_log_clean DIR OUT - fail on any splat in the console or dmesg, and
-# on anything the QEMU PRU-ICSS logged (an access it does not model, a PRU
-# the simulator stopped: DIR/qemu.log).
+# kernel_log_clean DIR OUT [WHICH] - fail on any splat in the console or
+# dmesg, and on anything the QEMU PRU-ICSS logged (an access it does not
+# model, a PRU the simulator stopped: DIR/qemu.log).  WHICH ("second boot: ")
+# goes into the result's name.
 kernel_log_clean() {
-	local dir=$1 out=$2 hits
+	local dir=$1 out=$2 which=${3:-} hits
 	local log
 	log=$(cat "$dir/console.log" "$out/dmesg.txt" 2>/dev/null | tr -d '\r')
 	hits=$(grep -E "$splat_re" <<<"$log" | sort -u || true)
@@ -291,17 +294,38 @@ kernel_log_clean() {
 	fi
 	if [ -n "$hits" ]; then
 		printf '%s\n' "$hits" | head -n 20
-		echo "FAIL: $kver: kernel log clean (oops/BUG/WARN/lockdep/hung task/page corruption)"
+		echo "FAIL: $kver: ${which}kernel log clean (oops/BUG/WARN/lockdep/hung task/page corruption)"
 		return 1
 	fi
 	# (QEMU's own boards log there too: vexpress probes devices it lacks)
 	hits=$(grep '^am335x-pruss: ' "$dir/qemu.log" 2>/dev/null || true)
 	if [ -n "$hits" ]; then
 		sort <<<"$hits" | uniq -c | sort -rn | head -n 20
-		echo "FAIL: $kver: kernel log clean, but the PRU-ICSS model logged $(wc -l <<<"$hits") line(s) ($dir/qemu.log)"
+		echo "FAIL: $kver: ${which}kernel log clean, but the PRU-ICSS model logged $(wc -l <<<"$hits") line(s) ($dir/qemu.log)"
 		return 1
 	fi
-	echo "PASS: $kver: kernel log clean (no oops, BUG, WARN, lockdep, hung task or page corruption)"
+	echo "PASS: $kver: ${which}kernel log clean (no oops, BUG, WARN, lockdep, hung task or page corruption)"
+}
+
+# second_boot DIR - boot the kernel of DIR again for the tests that left
+# DIR/out/<test>/next-boot.tar: a tar of files (relative to /) that the
+# guest's init lays over the root before any module loads, as a board's disk
+# keeps what the first boot wrote; then only those tests run, with
+# PRUKIT_BOOT=2 (tests/vm/init).  Console and artifacts in DIR/boot2/.
+second_boot() {
+	local dir=$1 b=$1/boot2 f t
+	rm -rf "$b"
+	for f in "$dir"/out/*/next-boot.tar; do
+		[ -e "$f" ] || continue
+		t=${f%/next-boot.tar}
+		mkdir -p "$b/in/next-boot"
+		cp "$f" "$b/in/next-boot/${t##*/}.tar"
+	done
+	[ -d "$b" ] || return 0
+	ln -s ../initrd "$b/initrd"
+	ln -s ../dtb "$b/dtb"
+	boot "$b" "$b/in" "$b/out"
+	kernel_log_clean "$b" "$b/out" "second boot: "
 }
 
 # Loaded in this order at boot (no udev loads them): the kernel's PRU
@@ -370,11 +394,12 @@ test)
 		kimage=${kimage_of[$series]}
 		dir=$PRUKIT_TOP/out/vm/$kver
 		msg "vmtest: booting $kver"
-		rm -f "$dir/results" "$dir/seconds"
+		rm -rf "$dir/results" "$dir/seconds" "$dir/boot2"
 		(
 			set +e
 			boot "$dir" "" "$dir/out" >"$dir/results"
 			kernel_log_clean "$dir" "$dir/out" >>"$dir/results"
+			second_boot "$dir" >>"$dir/results"
 			exit 0
 		) &
 		running=$((running + 1))
@@ -391,6 +416,8 @@ test)
 		# results are not all there.
 		grep -qF ": $kver: kernel log clean" "$res" 2>/dev/null ||
 			echo "FAIL: $kver: the boot left no complete results (see $dir/console.log)" >>"$res"
+		[ ! -d "$dir/boot2" ] || grep -qF ": $kver: second boot: kernel log clean" "$res" ||
+			echo "FAIL: $kver: the second boot left no complete results (see $dir/boot2/console.log)" >>"$res"
 		# Host halves of tests, on what the guest brought back: each beside
 		# its case's cases/ directory, in host/ (vm_host_half).
 		for t in $tests; do
@@ -410,7 +437,9 @@ test)
 		grep -E '^(PASS|FAIL):' "$res" | sed "s|^\(PASS\|FAIL\): |\1: $label: |"
 		p=$(grep -c '^PASS:' "$res" || true)
 		f=$(grep -c '^FAIL:' "$res" || true)
-		echo "$label ($kver): $p passed, $f failed, $(cat "$dir/seconds" 2>/dev/null || echo '?') s (boot and tests)"
+		secs="$(cat "$dir/seconds" 2>/dev/null || echo '?') s (boot and tests)"
+		[ ! -e "$dir/boot2/seconds" ] || secs="$secs + $(cat "$dir/boot2/seconds") s (second boot)"
+		echo "$label ($kver): $p passed, $f failed, $secs"
 		total_p=$((total_p + p))
 		total_f=$((total_f + f))
 	done

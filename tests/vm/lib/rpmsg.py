@@ -5,6 +5,7 @@ import errno
 import glob
 import os
 import select
+import subprocess
 import sys
 import time
 
@@ -118,6 +119,19 @@ def rproc_start(core, firmware):
         f.write(firmware)
     with open(r + "/state", "w") as f:
         f.write("start")
+
+
+def rproc_start_refused(core, firmware):
+    """Start firmware on core, expecting a refusal: (errno of the start, 0 if
+    it was not refused; the kernel log lines it wrote)."""
+    mark = len(subprocess.run(["dmesg"], capture_output=True, text=True).stdout.splitlines())
+    try:
+        rproc_start(core, firmware)
+        err = 0
+    except OSError as e:
+        err = e.errno
+    log = subprocess.run(["dmesg"], capture_output=True, text=True).stdout.splitlines()[mark:]
+    return err, log
 
 
 def wait_for(path, present=True, timeout=120):
