@@ -61,6 +61,7 @@ int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opco
 int prukit_pru_ctrl_post(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode);
 int prukit_pru_ctrl_answer(void __iomem *ctrl, u16 seq);
 int prukit_pru_gpio_bank(struct device_node *np);
+int prukit_pru_event(struct device *dev, const char *name);
 int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 				irq_handler_t handler, irq_handler_t thread_fn,
 				unsigned long flags, void *data);

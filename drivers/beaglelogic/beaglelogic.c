@@ -35,7 +35,6 @@
 #include <linux/gfp.h>
 #include <linux/interrupt.h>
 #include <linux/io.h>
-#include <linux/irq.h>
 #include <linux/kref.h>
 #include <linux/miscdevice.h>
 #include <linux/mm.h>
@@ -185,6 +184,25 @@ struct beaglelogic {
 
 /* libsigrok knows one analyzer, at one sysfs path: one instance. */
 static atomic_t bl_taken = ATOMIC_INIT(0);
+
+/*
+ * Capture memory is lowmem the rest of the system cannot use while it is
+ * allocated: 128 buffers of 4 MiB would be all of a Black's 512 MiB.
+ */
+static unsigned int max_memalloc_mib;
+module_param(max_memalloc_mib, uint, 0644);
+MODULE_PARM_DESC(max_memalloc_mib,
+		 "Most capture memory memalloc may allocate, in MiB (default 0: a quarter of the RAM)");
+
+/* The cap on memalloc, in bytes */
+static u64 bl_memalloc_cap(void)
+{
+	unsigned int mib = READ_ONCE(max_memalloc_mib);
+
+	if (mib)
+		return (u64)mib << 20;
+	return ((u64)totalram_pages() << PAGE_SHIFT) / 4;
+}
 
 static void bl_free_pages(struct beaglelogic *bl, struct bl_buf *bufs, unsigned int n, u32 size)
 {
@@ -353,7 +371,7 @@ static int bl_trig_setup(struct beaglelogic *bl)
 	 * Whole blocks; a pattern's run may begin a few samples before the
 	 * block it was seen in (bl_trig_done()): one block more.
 	 */
-	bl->trig_pre = max_t(u32, DIV_ROUND_UP(bl->pretrigger, spb), 1) +
+	bl->trig_pre = max_t(u32, DIV_ROUND_UP_ULL((u64)bl->pretrigger, spb), 1) +
 		       (bl->trig_kind == BL_TRIGGER_PATTERN);
 	if (bl->trig_pre + 2 > blocks)
 		return -EINVAL;
@@ -579,9 +597,16 @@ static int bl_set_buffers(struct beaglelogic *bl, unsigned int n, u32 unit)
 static int bl_memalloc(struct beaglelogic *bl, u32 bytes)
 {
 	u64 n = DIV_ROUND_UP_ULL((u64)bytes, bl->bufunitsize);
+	u64 cap = bl_memalloc_cap();
 
 	if (n > BL_MAX_BUFS)
 		return -EINVAL;
+	if (n * bl->bufunitsize > cap) {
+		dev_info_ratelimited(bl->dev,
+				     "memalloc %llu bytes: more than max_memalloc_mib allows (%llu MiB)\n",
+				     n * bl->bufunitsize, cap >> 20);
+		return -ENOMEM;
+	}
 	return bl_set_buffers(bl, n, bl->bufunitsize);
 }
 
@@ -712,7 +737,7 @@ static bool bl_ready(struct beaglelogic *bl, u32 index)
 {
 	if (bl->trig_on)
 		return bl->fw_done && index < bl->nbufs;
-	return bl->filled > index;
+	return (s32)(bl->filled - index) > 0;	/* the counters wrap */
 }
 
 /*
@@ -724,7 +749,7 @@ static bool bl_overrun(struct beaglelogic *bl, u32 index)
 {
 	u32 oldest;
 
-	if (bl->flags != BL_TRIGGERFLAGS_CONTINUOUS || bl->filled < index + bl->nbufs)
+	if (bl->flags != BL_TRIGGERFLAGS_CONTINUOUS || (s32)(bl->filled - index) < (s32)bl->nbufs)
 		return false;
 	/* the storer writes buffer @filled: @filled - nbufs + 1 is the oldest */
 	oldest = bl->filled - bl->nbufs + 1;
@@ -848,13 +873,15 @@ static loff_t bl_llseek(struct file *file, loff_t offset, int whence)
 	} else if (whence == SEEK_SET && offset == 0) {
 		bl_rewind(bl);
 		ret = 0;
-	} else if (whence == SEEK_CUR && offset >= 0) {
+	} else if (whence == SEEK_CUR && offset >= 0 && offset <= LLONG_MAX - (loff_t)bl->rpos) {
 		u64 total = (u64)bl->nbufs * bl->bufunitsize;
 
 		bl->rpos += offset;
 		if (bl->flags == BL_TRIGGERFLAGS_ONESHOT && bl->rpos > total)
 			bl->rpos = total;
 		ret = bl->rpos;
+	} else if (whence == SEEK_CUR && offset >= 0) {
+		ret = -EOVERFLOW;
 	} else {
 		ret = -EINVAL;
 	}
@@ -1170,7 +1197,7 @@ static ssize_t buffers_show(struct device *dev, struct device_attribute *attr, c
 	mutex_unlock(&bl->lock);
 	return len;
 }
-static DEVICE_ATTR_RO(buffers);
+static DEVICE_ATTR_ADMIN_RO(buffers);	/* bus addresses of kernel memory: root's */
 
 static ssize_t lasterror_show(struct device *dev, struct device_attribute *attr, char *buf)
 {
@@ -1282,8 +1309,11 @@ static ssize_t trigger_store(struct device *dev, struct device_attribute *attr,
 }
 static DEVICE_ATTR_RW(trigger);
 
+/* No ring holds more samples than BL_MAX_BUFS full buffers of 8-bit ones. */
 static int bl_set_pretrigger(struct beaglelogic *bl, u32 samples)
 {
+	if (samples > BL_MAX_BUFS * BL_MAX_BUFUNIT)
+		return -EINVAL;
 	bl->pretrigger = samples;
 	return 0;
 }
@@ -1388,6 +1418,23 @@ static void bl_misc_deregister(void *data)
 	misc_deregister(data);
 }
 
+/*
+ * First at unbind, before the misc device goes: misc_deregister() waits for
+ * every sysfs call in progress, and a "state" read sleeps for as long as the
+ * capture runs (days at low rates).  Stop the capture, mark the device gone
+ * and wake every sleeper: they all end with -ENODEV.
+ */
+static void bl_unplug(void *data)
+{
+	struct beaglelogic *bl = data;
+
+	mutex_lock(&bl->lock);
+	bl_stop(bl);
+	WRITE_ONCE(bl->gone, true);
+	mutex_unlock(&bl->lock);
+	wake_up_interruptible(&bl->wq);
+}
+
 static void bl_release_instance(void *data)
 {
 	atomic_set(&bl_taken, 0);
@@ -1397,7 +1444,6 @@ static int bl_probe(struct platform_device *pdev)
 {
 	struct device *dev = &pdev->dev;
 	struct beaglelogic *bl;
-	struct irq_data *d;
 	unsigned int c;
 	int irq, ret;
 
@@ -1432,15 +1478,18 @@ static int bl_probe(struct platform_device *pdev)
 		if (IS_ERR(bl->pru[c]))
 			return PTR_ERR(bl->pru[c]);
 	}
+	/* The storer strobes the system event the node maps (R31 reaches 16..31) */
+	ret = prukit_pru_event(dev, "event");
+	if (ret < 0)
+		return ret;
+	if (ret < 16 || ret > 31)
+		return dev_err_probe(dev, -EINVAL,
+				     "interrupt \"event\" is PRU system event %d: the PRU strobes only 16..31\n",
+				     ret);
+	bl->event = ret;
 	irq = devm_prukit_pru_request_irq(dev, "event", NULL, bl_irq, 0, bl);
 	if (irq < 0)
 		return irq;
-	/* The storer strobes the system event the node maps: the IRQ's hwirq. */
-	d = irq_get_irq_data(irq);
-	if (!d || d->hwirq < 16 || d->hwirq > 31)
-		return dev_err_probe(dev, -EINVAL,
-				     "interrupt \"event\" is no PRU system event 16..31\n");
-	bl->event = d->hwirq;
 
 	ret = dma_set_mask_and_coherent(dev, DMA_BIT_MASK(32));
 	if (ret)
@@ -1467,11 +1516,14 @@ static int bl_probe(struct platform_device *pdev)
 	bl->misc.name = "beaglelogic";
 	bl->misc.fops = &bl_fops;
 	bl->misc.groups = bl_groups;
-	bl->misc.mode = 0444;
+	/* root's, 0600: udev gives it a group (drivers/beaglelogic/udev) */
 	ret = misc_register(&bl->misc);
 	if (ret)
 		return dev_err_probe(dev, ret, "cannot register /dev/beaglelogic\n");
 	ret = devm_add_action_or_reset(dev, bl_misc_deregister, &bl->misc);
+	if (ret)
+		return ret;
+	ret = devm_add_action_or_reset(dev, bl_unplug, bl);
 	if (ret)
 		return ret;
 	dev_info(dev, "/dev/beaglelogic: %u buffers of %u bytes, PRU system event %u\n",

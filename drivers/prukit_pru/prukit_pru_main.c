@@ -619,6 +619,26 @@ int prukit_pru_gpio_bank(struct device_node *np)
 EXPORT_SYMBOL_PRUKIT(prukit_pru_gpio_bank);
 
 /*
+ * The node's interrupt @name (NULL: the first) as the PRUSS INTC's
+ * specifier <EVENT CHANNEL HOST> in @spec: true if it is one, false if the
+ * node has no such interrupt or it is another controller's.
+ */
+static bool prukit_pru_event_spec(struct device *dev, const char *name,
+				  struct of_phandle_args *spec)
+{
+	int index = 0;
+	bool ret;
+
+	if (name)
+		index = of_property_match_string(dev->of_node, "interrupt-names", name);
+	if (index < 0 || of_irq_parse_one(dev->of_node, index, spec))
+		return false;
+	ret = of_device_is_compatible(spec->np, "ti,pruss-intc") && spec->args_count == 3;
+	of_node_put(spec->np);
+	return ret;
+}
+
+/*
  * Only hosts 2..9 of the PRUSS INTC reach the ARM (host_intr0..7); hosts 0
  * and 1 are the PRUs' own R31 bits.  pruss_intc maps any host below 10, so
  * an event routed to 0 or 1 would map and never arrive: refuse it here.
@@ -626,20 +646,40 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_gpio_bank);
 static int prukit_pru_event_host(struct device *dev, const char *name)
 {
 	struct of_phandle_args spec;
-	int index = 0, ret = 0;
 
-	if (name)
-		index = of_property_match_string(dev->of_node, "interrupt-names", name);
-	if (index < 0 || of_irq_parse_one(dev->of_node, index, &spec))
-		return 0;	/* of_irq_get*() below says what is missing */
-	if (of_device_is_compatible(spec.np, "ti,pruss-intc") && spec.args_count == 3 &&
-	    (spec.args[2] < 2 || spec.args[2] > 9))
-		ret = dev_err_probe(dev, -EINVAL,
-				    "PRU event %u%s%s is routed to host %u, which no ARM interrupt receives: route it to a host of 2..9 (PRU_EVTOUT0..7)\n",
-				    spec.args[0], name ? " " : "", name ?: "", spec.args[2]);
-	of_node_put(spec.np);
-	return ret;
+	if (!prukit_pru_event_spec(dev, name, &spec))
+		return 0;	/* of_irq_get*() says what is missing */
+	if (spec.args[2] < 2 || spec.args[2] > 9)
+		return dev_err_probe(dev, -EINVAL,
+				     "PRU event %u%s%s is routed to host %u, which no ARM interrupt receives: route it to a host of 2..9 (PRU_EVTOUT0..7)\n",
+				     spec.args[0], name ? " " : "", name ?: "", spec.args[2]);
+	return 0;
 }
+
+/**
+ * prukit_pru_event() - the PRU system event of a consumer's interrupt
+ * @dev: the consumer device
+ * @name: its "interrupt-names" entry, or NULL for the first interrupt
+ *
+ * What the firmware strobes to raise it: EVENT of the node's own
+ * "interrupts-extended = <&pruss_intc EVENT CHANNEL HOST>", as the binding
+ * defines it (not the interrupt's hwirq, which is the INTC driver's own
+ * numbering).
+ *
+ * Return: the event (0..63), or -EINVAL (with a message) if that interrupt
+ * is not a PRUSS INTC event.
+ */
+int prukit_pru_event(struct device *dev, const char *name)
+{
+	struct of_phandle_args spec;
+
+	if (!prukit_pru_event_spec(dev, name, &spec) || spec.args[0] > 63)
+		return dev_err_probe(dev, -EINVAL,
+				     "interrupt %s is no PRU system event (<&pruss_intc EVENT CHANNEL HOST>)\n",
+				     name ?: "0");
+	return spec.args[0];
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_event);
 
 /**
  * devm_prukit_pru_request_irq() - request a PRU -> ARM event of the node

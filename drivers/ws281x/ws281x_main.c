@@ -35,7 +35,6 @@
 #include <linux/idr.h>
 #include <linux/interrupt.h>
 #include <linux/io.h>
-#include <linux/irq.h>
 #include <linux/kref.h>
 #include <linux/led-class-multicolor.h>
 #include <linux/leds.h>
@@ -291,14 +290,33 @@ static int ws281x_dead(struct ws281x *ws)
 }
 
 /*
+ * How long a writer waits for room: the time of two frames (one being sent,
+ * one waiting) plus slack for scheduling and, in the VM, the emulation.
+ * A core that takes no frame for that long has halted or faulted behind
+ * remoteproc's back.
+ */
+#define WS281X_WAIT_SLACK_MS	2000
+
+static unsigned int ws281x_wait_ms(struct ws281x *ws)
+{
+	/* 1.25 us a bit, 8 bits a byte; @reset in 5 ns cycles */
+	u64 ns = (u64)ws->max_leds * ws->bpl * 8 * 1250 + (u64)ws->reset * 5;
+
+	return 2 * DIV_ROUND_UP_ULL(ns, NSEC_PER_MSEC) + WS281X_WAIT_SLACK_MS;
+}
+
+/*
  * Wait until there is room for a frame (one sent, at most one waiting), with
  * @lock held, which it drops while it sleeps.  An idle core takes a frame
  * at once but says so with no event: look again for a few hundred
  * microseconds first.  A core stopped behind the driver's back sends no
- * event either: look again every 100 ms.
+ * event either: look again every 100 ms.  A core that takes nothing within
+ * ws281x_wait_ms(): -ETIMEDOUT.
  */
 static int ws281x_wait_room(struct ws281x *ws, bool nonblock)
 {
+	unsigned int ms = ws281x_wait_ms(ws);
+	unsigned long deadline = jiffies + msecs_to_jiffies(ms);
 	unsigned int tries = 0;
 	int ret;
 
@@ -312,6 +330,12 @@ static int ws281x_wait_room(struct ws281x *ws, bool nonblock)
 			return ws281x_dead(ws);
 		if (nonblock)
 			return -EAGAIN;
+		if (time_after(jiffies, deadline)) {
+			dev_err_ratelimited(ws->dev,
+					    "no PRU took a frame in %u ms: halted or faulted? (%llu frames shown)\n",
+					    ms, ws->shown);
+			return -ETIMEDOUT;
+		}
 		mutex_unlock(&ws->lock);
 		if (tries++ < 5)
 			usleep_range(100, 200);
@@ -1064,7 +1088,6 @@ static int ws281x_core_init(struct ws281x *ws, unsigned int c)
 {
 	struct ws281x_core *core = &ws->cores[c];
 	struct device *dev = ws->dev;
-	struct irq_data *d;
 	char name[8];
 	unsigned int b;
 	int irq, ret;
@@ -1088,16 +1111,17 @@ static int ws281x_core_init(struct ws281x *ws, unsigned int c)
 					     core->buf_size);
 	}
 	snprintf(name, sizeof(name), "event%u", c);
+	/* The PRU strobes the system event the node maps (R31 reaches 16..31) */
+	ret = prukit_pru_event(dev, name);
+	if (ret < 0)
+		return ret;
+	if (ret < 16 || ret > 31)
+		return dev_err_probe(dev, -EINVAL,
+				     "interrupt %s is PRU system event %d: the PRU strobes only 16..31\n",
+				     name, ret);
+	core->event = ret;
 	irq = devm_prukit_pru_request_irq(dev, name, NULL, ws281x_irq, 0, ws);
-	if (irq < 0)
-		return irq;
-	/* The PRU strobes the system event the node maps: the IRQ's hwirq. */
-	d = irq_get_irq_data(irq);
-	if (!d || d->hwirq < 16 || d->hwirq > 31)
-		return dev_err_probe(dev, -EINVAL, "interrupt %s is no PRU system event 16..31\n",
-				     name);
-	core->event = d->hwirq;
-	return 0;
+	return irq < 0 ? irq : 0;
 }
 
 static void ws281x_cdev_release(struct device *dev)
