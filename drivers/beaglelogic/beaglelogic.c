@@ -873,15 +873,19 @@ static loff_t bl_llseek(struct file *file, loff_t offset, int whence)
 	} else if (whence == SEEK_SET && offset == 0) {
 		bl_rewind(bl);
 		ret = 0;
-	} else if (whence == SEEK_CUR && offset >= 0 && offset <= LLONG_MAX - (loff_t)bl->rpos) {
+	} else if (whence == SEEK_CUR && offset >= 0) {
 		u64 total = (u64)bl->nbufs * bl->bufunitsize;
 
-		bl->rpos += offset;
-		if (bl->flags == BL_TRIGGERFLAGS_ONESHOT && bl->rpos > total)
-			bl->rpos = total;
-		ret = bl->rpos;
-	} else if (whence == SEEK_CUR && offset >= 0) {
-		ret = -EOVERFLOW;
+		/* one-shot: no further than the end; continuous: the ring wraps */
+		if (bl->flags == BL_TRIGGERFLAGS_ONESHOT) {
+			bl->rpos = min_t(u64, bl->rpos + min_t(u64, offset, total), total);
+			ret = bl->rpos;
+		} else if (offset > LLONG_MAX - (loff_t)bl->rpos) {
+			ret = -EOVERFLOW;
+		} else {
+			bl->rpos += offset;
+			ret = bl->rpos;
+		}
 	} else {
 		ret = -EINVAL;
 	}
