@@ -10,6 +10,7 @@
 #define _PRUKIT_PRU_H
 
 #include <linux/interrupt.h>
+#include <linux/iopoll.h>
 #include <linux/types.h>
 
 #include "prukit/pru_ctrl.h"
@@ -62,6 +63,31 @@ int prukit_pru_ctrl_post(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode)
 int prukit_pru_ctrl_answer(void __iomem *ctrl, u16 seq);
 int prukit_pru_gpio_bank(struct device_node *np);
 int prukit_pru_event(struct device *dev, const char *name);
+
+/**
+ * prukit_pru_poll_timeout() - wait, polling, for what the firmware does
+ * @pru: the core whose firmware makes @cond true
+ * @cond: what to wait for (evaluated after each sleep: MMIO reads, say)
+ * @sleep_us: the longest sleep between two looks
+ * @timeout_ms: how long at most
+ *
+ * The one way prukit drivers poll their firmware: the kernel's
+ * read_poll_timeout(), plus what a PRU adds: a core stopped behind the
+ * driver's back (remoteproc sysfs) ends the wait at once.  May sleep.
+ *
+ * Return: 0 once @cond held, -EPIPE if the core stopped before it did,
+ * -ETIMEDOUT.
+ */
+#define prukit_pru_poll_timeout(pru, cond, sleep_us, timeout_ms)			\
+({											\
+	bool __running, __done = false;							\
+	int __ret;									\
+											\
+	__ret = read_poll_timeout(prukit_pru_running, __running,			\
+				  (__done = (cond)) || !__running, sleep_us,		\
+				  (u64)(timeout_ms) * USEC_PER_MSEC, false, pru);	\
+	__done ? 0 : __running ? __ret : -EPIPE;					\
+})
 int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 				irq_handler_t handler, irq_handler_t thread_fn,
 				unsigned long flags, void *data);

@@ -75,7 +75,7 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 2440 scripts/vm.sh test "5.10 6.1 6.12"	# [2566], 3 kernels, one boot each (and a second for 71)
+step vmtest 2640 scripts/vm.sh test "5.10 6.1 6.12"	# [2770], 3 kernels, one boot each (and a second for 71)
 
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"
 echo "$passed passed, $failed failed"

@@ -178,17 +178,9 @@ static int hub75_start(struct hub75 *h)
  */
 static int hub75_wait_taken(struct hub75 *h)
 {
-	unsigned long deadline = jiffies + msecs_to_jiffies(PRUKIT_PRU_TIMEOUT_MS);
-
 	lockdep_assert_held(&h->lock);
-	while (readl(HUB75_CTRL(h, shown)) != h->front) {
-		if (!prukit_pru_running(h->pru))
-			return -EPIPE;
-		if (time_after(jiffies, deadline))
-			return -ETIMEDOUT;
-		usleep_range(200, 1000);
-	}
-	return 0;
+	return prukit_pru_poll_timeout(h->pru, readl(HUB75_CTRL(h, shown)) == h->front, 1000,
+				       PRUKIT_PRU_TIMEOUT_MS);
 }
 
 /* ------------------------------------------------------------------ */

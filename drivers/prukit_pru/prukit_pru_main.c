@@ -458,37 +458,30 @@ int prukit_pru_ctrl_check(struct prukit_pru *pru, void __iomem *ctrl, u32 magic,
 EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_check);
 
 /*
- * Poll the status word until @done says so, the firmware stops or time
- * runs out.  Polls every 100-200 us; the emulated PRU-ICSS answers within
- * about a millisecond of host time, a real PRU within microseconds.
+ * Poll the status word until the firmware is ready (and, unless @any_seq,
+ * answered @want_seq), the core stops or time runs out.  Looks every
+ * 200 us at most; the emulated PRU-ICSS answers within about a millisecond
+ * of host time, a real PRU within microseconds.
  */
 static int prukit_pru_poll(struct prukit_pru *pru, void __iomem *ctrl, u32 want_seq,
 			   bool any_seq, unsigned int timeout_ms, const char *what, u32 *status)
 {
-	unsigned long deadline = jiffies + msecs_to_jiffies(timeout_ms);
 	void __iomem *st = ctrl + offsetof(struct prukit_ctrl_hdr, status);
-	bool last = false;
+	u32 v = 0;
+	int ret;
 
-	for (;;) {
-		u32 v = readl(st);
-
-		if ((v & PRUKIT_CTRL_READY) && (any_seq || PRUKIT_CTRL_SEQ(v) == want_seq)) {
-			*status = v;
-			return 0;
-		}
-		if (!prukit_pru_running(pru)) {
-			dev_err(pru->dev, "PRU %s stopped while the driver waited for %s\n",
-				dev_name(&pru->rproc->dev), what);
-			return -EPIPE;
-		}
-		if (last)
-			break;
-		last = time_after(jiffies, deadline);
-		usleep_range(100, 200);
-	}
-	dev_err(pru->dev, "%s on PRU %s: no answer to %s within %u ms\n",
-		pru->rproc->firmware, dev_name(&pru->rproc->dev), what, timeout_ms);
-	return -ETIMEDOUT;
+	ret = prukit_pru_poll_timeout(pru, ((v = readl(st)) & PRUKIT_CTRL_READY) &&
+				      (any_seq || PRUKIT_CTRL_SEQ(v) == want_seq),
+				      200, timeout_ms);
+	if (!ret)
+		*status = v;
+	else if (ret == -EPIPE)
+		dev_err(pru->dev, "PRU %s stopped while the driver waited for %s\n",
+			dev_name(&pru->rproc->dev), what);
+	else
+		dev_err(pru->dev, "%s on PRU %s: no answer to %s within %u ms\n",
+			pru->rproc->firmware, dev_name(&pru->rproc->dev), what, timeout_ms);
+	return ret;
 }
 
 /**

@@ -418,31 +418,28 @@ static int ws281x_start(struct ws281x *ws)
  */
 static void ws281x_blank(struct ws281x *ws)
 {
-	unsigned long deadline = jiffies + msecs_to_jiffies(PRUKIT_PRU_TIMEOUT_MS);
 	unsigned int c;
 
 	if (ws->stopped || !ws->cores[0].ctrl)
 		return;
 	memset(ws->frame, 0, ws->frame_size);
-	while (!ws281x_room(ws)) {
-		if (time_after(jiffies, deadline))
-			return;
-		usleep_range(1000, 2000);
-	}
+	/* (ws281x_room() is true, and sets @stopped, once a core stopped) */
+	if (prukit_pru_poll_timeout(ws->cores[0].pru, ws281x_room(ws), 2000,
+				    PRUKIT_PRU_TIMEOUT_MS))
+		return;
 	if (ws->stopped || ws281x_post(ws))
 		return;
-	/* Done once each core counted every frame it was sent. */
+	/* Done once each core counted every frame it was sent (the counts wrap). */
 	for (c = 0; c < ws->ncores; c++) {
 		struct ws281x_core *core = &ws->cores[c];
 		void __iomem *frames = core->ctrl + offsetof(struct ws281x_ctrl, frames);
 
-		while (ws281x_core_ok(core) && readl(frames) < (u32)core->posted) {
-			if (time_after(jiffies, deadline)) {
-				dev_warn(ws->dev, "PRU %s did not finish the blank frame\n",
-					 dev_name(&core->pru->rproc->dev));
-				return;
-			}
-			usleep_range(1000, 2000);
+		if (prukit_pru_poll_timeout(core->pru,
+					    (s32)(readl(frames) - (u32)core->posted) >= 0,
+					    2000, PRUKIT_PRU_TIMEOUT_MS) == -ETIMEDOUT) {
+			dev_warn(ws->dev, "PRU %s did not finish the blank frame\n",
+				 dev_name(&core->pru->rproc->dev));
+			return;
 		}
 	}
 }
