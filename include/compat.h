@@ -38,6 +38,18 @@
 #endif
 
 /*
+ * v6.3: vma->vm_flags became const, changed through vm_flags_set() and
+ * vm_flags_clear() ("mm: introduce vma->vm_flags wrapper functions").
+ * Decided by the kernel's <linux/mm.h> (the top-level Kbuild:
+ * PRUKIT_HAVE_VM_FLAGS_CLEAR): Debian's 6.1 lacks it, 6.12 has it.
+ */
+#ifdef PRUKIT_HAVE_VM_FLAGS_CLEAR
+#define prukit_vm_flags_clear(vma, flags)	vm_flags_clear(vma, flags)
+#else
+#define prukit_vm_flags_clear(vma, flags)	((vma)->vm_flags &= ~(flags))
+#endif
+
+/*
  * v5.11: rproc_set_firmware() ("remoteproc: Add a rproc_set_firmware()
  * API"); TI's 5.10 has it too (backported).  Decided by the kernel's
  * <linux/remoteproc.h> (the top-level Kbuild: PRUKIT_HAVE_RPROC_SET_FIRMWARE).

@@ -1013,6 +1013,14 @@ static int bl_mmap(struct file *file, struct vm_area_struct *vma)
 	unsigned int i;
 	int ret = 0;
 
+	/*
+	 * Read-only, for good: the PRU writes the buffers, and a CPU store
+	 * would leave dirty cache lines that overwrite its data on eviction.
+	 */
+	if (vma->vm_flags & VM_WRITE)
+		return -EPERM;
+	prukit_vm_flags_clear(vma, VM_MAYWRITE);
+
 	mutex_lock(&bl->buf_lock);
 	if (!bl->nbufs || len > (unsigned long)bl->nbufs * bl->bufunitsize ||
 	    !PAGE_ALIGNED(bl->bufunitsize)) {
