@@ -82,10 +82,13 @@ overlays_install: overlays
 	install -m 0644 $(BUILD)/overlays/*.dtbo $(DESTDIR)$(FIRMWARE_DIR)/
 
 # One file, 60-prukit.rules: udev/60-prukit.rules (what every prukit device
-# node shares) followed by each driver's drivers/<driver>/udev/*.rules.  One
-# file rather than one per driver, so that installing a newer prukit replaces
-# the rules of a driver it renamed or dropped instead of leaving them behind.
-UDEV_RULES := udev/60-prukit.rules $(sort $(wildcard drivers/*/udev/*.rules))
+# node shares) followed by each driver's drivers/<driver>/udev/*.rules, in
+# the order of drivers/registry.  One file rather than one per driver, so
+# that installing a newer prukit replaces the rules of a driver it renamed
+# or dropped instead of leaving them behind.
+PRUKIT_DRIVERS := $(shell awk '/^[a-z0-9_]+[ \t]/ { print $$1 }' $(CURDIR)/drivers/registry)
+UDEV_RULES := udev/60-prukit.rules \
+	$(foreach d,$(PRUKIT_DRIVERS),$(sort $(wildcard drivers/$(d)/udev/*.rules)))
 
 # Generated on every run (it takes no time): a rules file removed since the
 # last run is gone from the result too, which modification times would miss.

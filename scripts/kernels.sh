@@ -48,7 +48,8 @@ copy_sources() {
 	rm -rf "$dest"
 	mkdir -p "$dest"
 	(cd "$PRUKIT_TOP" &&
-		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \) \
+		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \
+			-o -path drivers/registry -o -path drivers/gate.mk \) \
 			-print0 | xargs -0 cp --parents -t "$dest")
 }
 

@@ -20,6 +20,9 @@ grep -q '^obj-y.*+= prukit/' "$src/drivers/Makefile" ||
 	echo 'obj-y				+= prukit/' >>"$src/drivers/Makefile"
 
 mkdir -p "$build"
+# The drivers' Kconfig entries, from drivers/registry (Kconfig sources them).
+"$PRUKIT_TOP/scripts/registry.sh" kconfig >"$build/prukit-drivers.Kconfig"
+export PRUKIT_DRIVERS_KCONFIG=$build/prukit-drivers.Kconfig
 # The build directory is shared by every checkout (through the symlink
 # above), and make goes by modification times: objects built from another
 # checkout can look newer than this one's sources and be linked stale (seen

@@ -40,14 +40,23 @@ need_pkgs() {
 
 ncpus() { getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1; }
 
+# prukit_drivers [TOP] - the drivers, one name per line, in the order of
+# TOP/drivers/registry (TOP: PRUKIT_TOP), whose lines are what every list of
+# drivers is derived from.
+prukit_drivers() {
+	awk '/^[a-z0-9_]+[ \t]/ { print $1 }' "${1:-$PRUKIT_TOP}/drivers/registry"
+}
+
 # vm_cases [TOP] - the VM test cases, one "NAME PATH" line each, sorted by
 # name: the executable files in TOP/tests/vm/cases and in every driver's
-# TOP/drivers/<driver>/tests/vm/cases (TOP: PRUKIT_TOP).  The guest runs
+# TOP/drivers/<driver>/tests/vm/cases (TOP: PRUKIT_TOP; the drivers of
+# TOP/drivers/registry).  The guest runs
 # them all in one boot, by name, from one directory (/prukit/tests), so two
 # cases with one name are an error: both are named on stderr, none is listed.
 vm_cases() {
-	local top=${1:-$PRUKIT_TOP} d
-	for d in "$top"/tests/vm/cases "$top"/drivers/*/tests/vm/cases; do
+	local top=${1:-$PRUKIT_TOP} d drivers
+	drivers=$(prukit_drivers "$top") || return 1
+	for d in "$top"/tests/vm/cases $(printf "$top/drivers/%s/tests/vm/cases " $drivers); do
 		[ -d "$d" ] || continue
 		# Executables only: not __pycache__, data files and the like.
 		find "$d" -maxdepth 1 -type f -perm -u+x -printf '%f %p\n'
@@ -68,12 +77,14 @@ vm_host_half() {
 }
 
 # driver_checks [TOP] - each driver's own make check step, one "NAME MIN
-# PATH" line each: TOP/drivers/<driver>/tests/check.sh, with MIN (the fewest
+# PATH" line each: TOP/drivers/<driver>/tests/check.sh (the drivers of
+# TOP/drivers/registry), with MIN (the fewest
 # PASS:/FAIL: lines it must print, as step() takes it) from its line
 # "# prukit-check-min: N", or "none" when it declares none.
 driver_checks() {
-	local top=${1:-$PRUKIT_TOP} f d min
-	for f in "$top"/drivers/*/tests/check.sh; do
+	local top=${1:-$PRUKIT_TOP} f d min drivers
+	drivers=$(prukit_drivers "$top") || return 1
+	for f in $(printf "$top/drivers/%s/tests/check.sh " $drivers); do
 		[ -f "$f" ] || continue
 		d=${f%/tests/check.sh}
 		min=$(sed -n 's/^# prukit-check-min: *\([0-9][0-9]*\) *$/\1/p' "$f" | head -n 1)

@@ -26,7 +26,8 @@
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
 #	For each kernel, boot once and run the tests in tests/vm/cases and
-#	drivers/*/tests/vm/cases (all, or those named in TESTS), bring back
+#	drivers/<driver>/tests/vm/cases of drivers/registry's drivers (all,
+#	or those named in TESTS), bring back
 #	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N
 #	failed" per kernel and overall.  A test that leaves files for a
 #	second boot (second_boot below) gets one, right after the first.
@@ -202,7 +203,7 @@ make_initrd() {
 	[ -d "$VMDIR/lib" ] && cp -r "$VMDIR/lib" "$stage/prukit/lib"
 	# and the drivers' guest libraries (drivers/<driver>/tests/vm/lib/*.py)
 	local lib
-	for lib in "$PRUKIT_TOP"/drivers/*/tests/vm/lib/*.py; do
+	for lib in $(prukit_drivers | sed "s|.*|$PRUKIT_TOP/drivers/&/tests/vm/lib/*.py|"); do
 		[ -e "$lib" ] || continue
 		[ ! -e "$stage/prukit/lib/${lib##*/}" ] || die "guest library ${lib##*/} twice"
 		install -m 0644 "$lib" "$stage/prukit/lib/"

@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# Adding a driver touches one place: a copy of the tree (git ls-files) gets a
-# fake driver folder, drivers/zz_example/ (module and Kbuild gate, firmware,
-# udev rule, VM test with host half, make check step) plus its one line in
-# Kbuild, and this test asserts that the firmware build, make udev_install,
-# the VM harness's test discovery and make check's driver steps find it by
-# themselves, and that its Kbuild gate builds it only where the kernel has
-# the option it needs (one kbuild run against Debian's 6.12 armmp headers
-# with the option, one without).  It also checks that dkms.conf lists a
-# module only where the kernel has what its Kbuild gate needs, and that
-# dkms.conf and the drivers' Kbuild files agree.  Part of make check's
-# harness step; takes some 20 s.
+# Adding a driver touches two places, its folder and its line in
+# drivers/registry: a copy of the tree (git ls-files) gets a fake driver
+# folder, drivers/zz_example/ (module and Kbuild, firmware, udev rule, VM
+# test with host half, make check step) plus its registry line, and this
+# test asserts that the firmware build, make udev_install, the VM harness's
+# test discovery, make check's driver steps, dkms.conf and the Kconfig
+# entries find it by themselves, and that its gate builds it only where the
+# kernel has the option its line needs (one kbuild run against Debian's
+# 6.12 armmp headers with the option, one without).  A second fake folder,
+# drivers/zz_unlisted/, the same but with no registry line, is found by
+# none of them.  Part of make check's harness step; takes some 20 s.
 set -uo pipefail
 . "$(dirname "$0")/../../scripts/lib.sh"
 
@@ -38,16 +38,10 @@ mkdir -p "$src"
 
 zz=$src/drivers/zz_example
 mkdir -p "$zz"/firmware/zz-test "$zz"/udev "$zz"/tests/vm/cases "$zz"/tests/vm/host
-# The gate as every driver writes it (Documentation/writing-a-driver.rst;
-# checked below), with two options: one every kernel has, one none has.
-gate_line='ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)'
-cat >"$zz/Kbuild" <<EOF
+cat >"$zz/Kbuild" <<'EOF'
 # SPDX-License-Identifier: GPL-2.0-only
-prukit-needs := CONFIG_MODULES CONFIG_PRUKIT_ZZ_EXAMPLE_DEP
-$gate_line
-CONFIG_PRUKIT_ZZ_EXAMPLE ?= m
-endif
-obj-\$(CONFIG_PRUKIT_ZZ_EXAMPLE) += zz_example.o
+include $(prukit_top)/drivers/gate.mk
+obj-$(CONFIG_PRUKIT_ZZ_EXAMPLE) += zz_example.o
 EOF
 cat >"$zz/zz_example.c" <<'EOF'
 // SPDX-License-Identifier: GPL-2.0-only
@@ -55,7 +49,8 @@ cat >"$zz/zz_example.c" <<'EOF'
 MODULE_DESCRIPTION("prukit discovery self-test");
 MODULE_LICENSE("GPL");
 EOF
-echo 'obj-y += drivers/zz_example/' >>"$src/Kbuild"
+# Two options: one every kernel has, one none has.
+printf 'zz_example\tMODULES,PRUKIT_ZZ_EXAMPLE_DEP\tthe discovery self-test\n' >>"$src/drivers/registry"
 # The driver's firmware (drivers/<driver>/firmware/fw.mk, named after the
 # driver) and a test firmware in a subfolder (named after the folder).
 printf 'fw-srcs := zz.c\nfw-cores := 0\n' >"$zz/firmware/fw.mk"
@@ -65,6 +60,14 @@ printf '#!/bin/sh\necho "PASS: zz"\n' >"$zz/tests/vm/cases/50-zz-example"
 printf '#!/bin/sh\necho "PASS: zz host"\n' >"$zz/tests/vm/host/50-zz-example"
 printf '#!/bin/sh\n# prukit-check-min: 3\n' >"$zz/tests/check.sh"
 chmod +x "$zz"/tests/vm/cases/50-zz-example "$zz"/tests/vm/host/50-zz-example "$zz"/tests/check.sh
+# The same folder under another name, without a registry line.
+un=$src/drivers/zz_unlisted
+cp -r "$zz" "$un"
+mv "$un/zz_example.c" "$un/zz_unlisted.c"
+mv "$un/tests/vm/cases/50-zz-example" "$un/tests/vm/cases/51-zz-unlisted"
+sed -i 's/ZZ_EXAMPLE/ZZ_UNLISTED/; s/zz_example/zz_unlisted/' "$un/Kbuild"
+sed -i 's/zz_example/zz_unlisted/' "$un/udev/zz_example.rules"
+mv "$un/firmware/zz-test" "$un/firmware/zz-unlisted-test"
 
 # --- (a) the firmware build -------------------------------------------------
 
@@ -82,6 +85,8 @@ check "make install's firmware leaves out the test firmware zz-test (fw-test := 
 	eval '! grep -qF zz-test <<<"$install_list"'
 check "the driver's firmware is compiled with -I drivers/zz_example (its protocol header)" \
 	eval 'fwmake print-cflags-zz_example-pru0 | grep -qF -- "-I$zz "'
+check "firmware list has nothing of a folder without a registry line" \
+	eval '! grep -q "zz_unlisted\|zz-unlisted" <<<"$list"'
 
 # --- (b) make udev_install --------------------------------------------------
 
@@ -89,6 +94,8 @@ rules=$tmp/root/etc/udev/rules.d/60-prukit.rules
 if make -s -C "$src" udev_install DESTDIR="$tmp/root" >"$tmp/udev.log" 2>&1; then
 	check "make udev_install puts the driver's rule into 60-prukit.rules" \
 		grep -qxF 'SUBSYSTEM=="zz_example", GROUP="remoteproc", MODE="0660"' "$rules"
+	check "60-prukit.rules has nothing of a folder without a registry line" \
+		eval '! grep -q zz_unlisted "$rules"'
 	check "60-prukit.rules still has rpmsg_pru's rule" \
 		grep -qxF 'SUBSYSTEM=="rpmsg_pru", GROUP="remoteproc", MODE="0660"' "$rules"
 else
@@ -101,6 +108,8 @@ fi
 cases=$(vm_cases "$src") || fail "vm_cases"
 check "vm_cases lists the driver's VM test" \
 	grep -qxF "50-zz-example $zz/tests/vm/cases/50-zz-example" <<<"$cases"
+check "vm_cases leaves out the VM test of a folder without a registry line" \
+	eval '! grep -q zz-unlisted <<<"$cases"'
 check "vm_cases still lists tests/vm/cases/10-boot" \
 	grep -qxF "10-boot $src/tests/vm/cases/10-boot" <<<"$cases"
 check "vm_cases lists them in name order" \
@@ -115,6 +124,20 @@ rm "$src/tests/vm/cases/50-zz-example"
 
 check "driver_checks finds the driver's tests/check.sh with its minimum 3" \
 	grep -qxF "zz_example 3 $zz/tests/check.sh" <<<"$(driver_checks "$src")"
+check "driver_checks leaves out the check step of a folder without a registry line" \
+	eval '! driver_checks "$src" | grep -q zz_unlisted'
+
+# --- the Kconfig entries (a kernel tree prukit is grafted into) -------------
+
+kconfig=$("$src/scripts/registry.sh" kconfig) || fail "registry.sh kconfig"
+check "registry.sh kconfig: the driver's tristate, depending on its line's options" \
+	eval 'grep -A2 -x "config PRUKIT_ZZ_EXAMPLE" <<<"$kconfig" |
+		grep -qx "$(printf "\tdepends on MODULES && PRUKIT_ZZ_EXAMPLE_DEP")"'
+check "registry.sh kconfig: prukit_pru is CONFIG_PRUKIT_PRU, rpmsg_pru CONFIG_PRUKIT_RPMSG_PRU" \
+	eval 'grep -qx "config PRUKIT_PRU" <<<"$kconfig" && grep -qx "config PRUKIT_RPMSG_PRU" <<<"$kconfig"'
+check "registry.sh kconfig: one entry per registry line, nothing for a folder without one" \
+	test "$(grep -c "^config " <<<"$kconfig")" = "$(prukit_drivers "$src" | wc -l)" -a \
+	"$(grep -c ZZ_UNLISTED <<<"$kconfig")" = 0
 
 # --- (d) the Kbuild gate, in a real kbuild run ------------------------------
 
@@ -138,8 +161,10 @@ else
 	fail "kbuild without CONFIG_PRUKIT_ZZ_EXAMPLE_DEP failed ($kver)"
 fi
 if kmake CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y >"$tmp/kbuild2.log" 2>&1; then
-	check "Kbuild gate: zz_example.ko built where the kernel has it ($kver, through the top Kbuild's line)" \
+	check "Kbuild gate: zz_example.ko built where the kernel has it ($kver, through its registry line)" \
 		test -e "$zz/zz_example.ko"
+	check "Kbuild: nothing built of a folder without a registry line" \
+		eval '! ls "$un"/*.o >/dev/null 2>&1' 
 else
 	tail -n 20 "$tmp/kbuild2.log"
 	fail "kbuild with CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y failed ($kver)"
@@ -169,16 +194,16 @@ check "dkms.conf leaves rpmsg_pru out where the kernel lacks CONFIG_RPMSG, the r
 check "dkms.conf's list has no gap or misaligned entry without CONFIG_RPMSG" \
 	eval '! grep -qvE "^[a-z_]+ drivers/[a-z_]+/ /updates/dkms$" <<<"$no_rpmsg"'
 
-# Every driver of the top Kbuild has its one dkms.conf line, and dkms.conf
-# lists no other; the options it drops a module for are the module's own
-# Kbuild gate (the zz_example copy: listed with the option, dropped without).
-kb_drivers=$(sed -n 's|^obj-y += drivers/\([a-z0-9_]*\)/$|\1|p' "$PRUKIT_TOP/Kbuild" | sort)
-dk_drivers=$(sed -n 's/^prukit_module \([a-z0-9_]*\)\([[:space:]].*\)\?$/\1/p' "$PRUKIT_TOP/dkms.conf" | sort)
-check "dkms.conf has one line per driver in Kbuild ($(echo $kb_drivers))" \
-	test -n "$kb_drivers" -a "$kb_drivers" = "$dk_drivers"
-for d in $kb_drivers; do
-	check "drivers/$d/: its Kbuild gate is the one tested here" \
-		grep -qxF "$gate_line" "$PRUKIT_TOP/drivers/$d/Kbuild"
+# dkms.conf lists every driver of the registry, and no other; the options
+# it drops a module for are the module's registry line's (the zz_example
+# copy: listed with the option, dropped without).
+every_opt=($(awk '/^[a-z0-9_]+[ \t]/ { print $2 }' "$PRUKIT_TOP/drivers/registry" |
+	tr , '\n' | sort -u | sed 's/.*/CONFIG_&=y/'))
+check "dkms.conf lists the registry's drivers, in its order, where the kernel has every option they need ($(prukit_drivers | paste -sd' ' -))" \
+	test "$(dkms_list "${every_opt[@]}" | awk '{ print $1 }')" = "$(prukit_drivers)"
+for d in $(prukit_drivers); do
+	check "drivers/$d/: its Kbuild includes the gate, drivers/gate.mk" \
+		grep -qxF 'include $(prukit_top)/drivers/gate.mk' "$PRUKIT_TOP/drivers/$d/Kbuild"
 done
 zz_list() {
 	mkdir -p "$tmp/k"
@@ -187,9 +212,10 @@ zz_list() {
 	 . "$src/dkms.conf" >/dev/null
 	 echo "${BUILT_MODULE_NAME[*]}")
 }
-sed 's/^prukit_modules_end$/prukit_module zz_example\n&/' "$PRUKIT_TOP/dkms.conf" >"$src/dkms.conf"
 check "dkms.conf lists a new driver's module where the kernel has its gate's option" \
 	eval 'zz_list "${all_opts[@]}" CONFIG_MODULES=y CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y | grep -qw zz_example'
+check "dkms.conf lists nothing of a folder without a registry line" \
+	eval '! zz_list "${all_opts[@]}" CONFIG_MODULES=y CONFIG_PRUKIT_ZZ_EXAMPLE_DEP=y | grep -qw zz_unlisted'
 # (without it, the same modules as dkms.conf lists for that kernel)
 check "dkms.conf drops a new driver's module where the kernel lacks its gate's option" \
 	eval 'test "$(zz_list "${all_opts[@]}" CONFIG_MODULES=y)" = "$(awk "{ print \$1 }" <<<"$full" | paste -sd" " -)"'

@@ -1,0 +1,17 @@
+# SPDX-License-Identifier: GPL-2.0-only
+#
+# The gate, included by every driver's Kbuild: out of tree there is no
+# Kconfig, so drivers/<driver>/<driver>.ko is built (CONFIG_PRUKIT_<DRIVER>
+# ?= m, upper case, a "prukit_" prefix dropped) wherever the kernel has every
+# option its line in drivers/registry needs; dkms.conf lists the module
+# under the same condition.  In a kernel tree (make kunit) Kconfig's value,
+# when it sets one, stands (?=).  The options come from the kernel's
+# include/config/auto.conf, which kbuild reads in every directory; the
+# variable is set in the driver's own directory, so it reaches no other.
+prukit-driver := $(notdir $(patsubst %/,%,$(src)))
+prukit-config := CONFIG_PRUKIT_$(shell echo '$(patsubst prukit_%,%,$(prukit-driver))' | tr a-z A-Z)
+prukit-needs := $(addprefix CONFIG_,$(subst $(comma), ,$(shell awk -v d='$(prukit-driver)' \
+	'$$1 == d { print $$2 }' $(prukit_top)/drivers/registry)))
+ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)
+$(prukit-config) ?= m
+endif
