@@ -24,7 +24,9 @@
  *
  * The buffers are the driver's own lowmem pages, mapped for streaming DMA
  * (not one coherent allocation: Debian's kernels reserve only 16 MiB of
- * CMA); each full buffer is synced for the CPU before a reader sees it.
+ * CMA); each full buffer is synced for the CPU before a reader sees it,
+ * and in a continuous capture handed back to the device once the reader
+ * has left it, before the storer refills it.
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
@@ -610,7 +612,12 @@ static int bl_memalloc(struct beaglelogic *bl, u32 bytes)
 	return bl_set_buffers(bl, n, bl->bufunitsize);
 }
 
-/* The original's test pattern: incrementing 32-bit words over every buffer. */
+/*
+ * The original's test pattern: incrementing 32-bit words over every buffer.
+ * No capture runs (bl_settable()): the CPU takes each buffer before it
+ * writes, and keeps it until the next capture hands every buffer to the
+ * device (bl_start()), which discards nothing the reader wanted.
+ */
 static void bl_fill_test_pattern(struct beaglelogic *bl)
 {
 	u32 word = 0;
@@ -619,6 +626,8 @@ static void bl_fill_test_pattern(struct beaglelogic *bl)
 	for (i = 0; i < bl->nbufs; i++) {
 		u32 *p = bl->bufs[i].va;
 
+		dma_sync_single_for_cpu(bl->dev, bl->bufs[i].dma, bl->bufunitsize,
+					DMA_FROM_DEVICE);
 		for (j = 0; j < bl->bufunitsize / 4; j++)
 			p[j] = word++;
 	}
@@ -727,6 +736,27 @@ static u32 bl_index(struct beaglelogic *bl, u32 *off)
 	if (off)
 		*off = rem;
 	return index;
+}
+
+/*
+ * A continuous capture's reader is done with the buffers from @from up to
+ * @index: hand those the storer filled (bl_update() took them for the CPU)
+ * back to the device, which refills each next time round the ring.  At
+ * most a ring's worth: older ones are the same buffers again.
+ */
+static void bl_give_back(struct beaglelogic *bl, u32 from, u32 index)
+{
+	u32 n;
+
+	if (bl->trig_on || bl->flags != BL_TRIGGERFLAGS_CONTINUOUS)
+		return;
+	if ((s32)(index - bl->synced) > 0)	/* not filled yet: the device's */
+		index = bl->synced;
+	if ((s32)(index - from) <= 0)
+		return;
+	for (n = min_t(u32, index - from, bl->nbufs); n; n--)
+		dma_sync_single_for_device(bl->dev, bl->bufs[(index - n) % bl->nbufs].dma,
+					   bl->bufunitsize, DMA_FROM_DEVICE);
 }
 
 /*
@@ -851,7 +881,9 @@ static ssize_t bl_read(struct file *file, char __user *ubuf, size_t count, loff_
 		ret = -EIO;
 		goto unlock;
 	}
+	index = bl_index(bl, NULL);
 	bl->rpos += n;
+	bl_give_back(bl, index, bl_index(bl, NULL));
 	*ppos = bl->rpos;
 	mutex_unlock(&bl->lock);
 	return n;
@@ -883,7 +915,10 @@ static loff_t bl_llseek(struct file *file, loff_t offset, int whence)
 		} else if (offset > LLONG_MAX - (loff_t)bl->rpos) {
 			ret = -EOVERFLOW;
 		} else {
+			u32 from = bl_index(bl, NULL);
+
 			bl->rpos += offset;
+			bl_give_back(bl, from, bl_index(bl, NULL));
 			ret = bl->rpos;
 		}
 	} else {
@@ -1010,6 +1045,7 @@ static int bl_mmap(struct file *file, struct vm_area_struct *vma)
 {
 	struct beaglelogic *bl = file->private_data;
 	unsigned long len = vma->vm_end - vma->vm_start, done = 0;
+	struct page **pages;
 	unsigned int i;
 	int ret = 0;
 
@@ -1027,16 +1063,31 @@ static int bl_mmap(struct file *file, struct vm_area_struct *vma)
 		ret = -EINVAL;
 		goto unlock;
 	}
-	for (i = 0; done < len; i++) {
-		unsigned long n = min_t(unsigned long, len - done, bl->bufunitsize);
-
-		ret = remap_pfn_range(vma, vma->vm_start + done,
-				      page_to_pfn(virt_to_page(bl->bufs[i].va)), n,
-				      vma->vm_page_prot);
-		if (ret)
-			goto unlock;
-		done += n;
+	/*
+	 * The buffers are the page allocator's pages: mapped as pages (not as
+	 * raw PFNs, VM_IO | VM_PFNMAP), what reads a process's memory through
+	 * its pages (/proc/PID/mem, O_DIRECT I/O from the mapping) works.
+	 */
+	pages = kvmalloc_array(bl->bufunitsize >> PAGE_SHIFT, sizeof(*pages), GFP_KERNEL);
+	if (!pages) {
+		ret = -ENOMEM;
+		goto unlock;
 	}
+	for (i = 0; done < len; i++) {
+		unsigned long n = min_t(unsigned long, len - done, bl->bufunitsize) >> PAGE_SHIFT;
+		unsigned long k, left = n;
+		struct page *first = virt_to_page(bl->bufs[i].va);
+
+		for (k = 0; k < n; k++)
+			pages[k] = first + k;
+		ret = vm_insert_pages(vma, vma->vm_start + done, pages, &left);
+		if (ret)
+			break;
+		done += n << PAGE_SHIFT;
+	}
+	kvfree(pages);
+	if (ret)
+		goto unlock;
 	vma->vm_private_data = bl;
 	vma->vm_ops = &bl_vm_ops;
 	bl->maps++;
