@@ -738,6 +738,9 @@ static u32 bl_index(struct beaglelogic *bl, u32 *off)
 	return index;
 }
 
+/* How long a reader waits for the storer to answer a ping (bl_wait()) */
+#define BL_PING_MS	2000
+
 /*
  * A continuous capture's reader is done with the buffers from @from up to
  * @index: hand those the storer filled (bl_update() took them for the CPU)
@@ -795,6 +798,11 @@ static bool bl_overrun(struct beaglelogic *bl, u32 index)
  */
 static int bl_wait(struct beaglelogic *bl, bool nonblock)
 {
+	void __iomem *ping = bl->ctrl[BL_STORER] + offsetof(struct bl_ctrl, ping);
+	void __iomem *pong = bl->ctrl[BL_STORER] + offsetof(struct bl_ctrl, pong);
+	unsigned long asked = jiffies;
+	u16 asking = readw(ping);
+
 	for (;;) {
 		u32 index = bl_index(bl, NULL);
 		u32 seen;
@@ -805,6 +813,20 @@ static int bl_wait(struct beaglelogic *bl, bool nonblock)
 			return 0;
 		if (nonblock)
 			return -EAGAIN;
+		/*
+		 * However slow the capture, a running storer answers a ping
+		 * while it waits for a block (bl_store.S): one left unanswered
+		 * is a halted or faulted core, which remoteproc does not see.
+		 */
+		if (readw(pong) == asking) {
+			writew(++asking, ping);
+			asked = jiffies;
+		} else if (time_after(jiffies, asked + msecs_to_jiffies(BL_PING_MS))) {
+			dev_err_ratelimited(bl->dev,
+					    "the storer (PRU0) has not answered for %u ms: halted or faulted?\n",
+					    BL_PING_MS);
+			return -ETIMEDOUT;
+		}
 		seen = bl->filled;
 		mutex_unlock(&bl->lock);
 		ret = wait_event_interruptible_timeout(bl->wq, READ_ONCE(bl->filled) != seen ||

@@ -54,7 +54,7 @@
 #endif
 
 #define BL_MAGIC		0x4c474c42u	/* "BLGL" */
-#define BL_VERSION		2
+#define BL_VERSION		3
 
 #define BL_MAX_BUFS		128
 #define BL_BLOCK_BYTES		32	/* a buffer is a multiple of this */
@@ -133,6 +133,11 @@
  * @trig_post: START (PRU0): blocks stored after the trigger's, >= 1
  * @trig_block: PRU0: the block (numbered from 1) that held the trigger, 0
  *	while none did
+ * @ping: the driver's: any value, changed to ask the storer whether it
+ *	runs
+ * @pong: PRU0: the storer copies @ping here while it waits for a block:
+ *	a capture whose storer leaves a new @ping unanswered is on a halted
+ *	or faulted core, however slow its rate
  */
 struct bl_ctrl {
 	struct prukit_ctrl_hdr hdr;
@@ -153,6 +158,8 @@ struct bl_ctrl {
 	__u32 trig_pre;
 	__u32 trig_post;
 	__u32 trig_block;
+	__u16 ping;
+	__u16 pong;
 } __packed __aligned(4);
 #endif
 
@@ -167,5 +174,6 @@ struct bl_ctrl {
 #define BL_CTRL_TRIG_MODE	(BL_CTRL_BUFS + 4 * BL_MAX_BUFS)	/* 568 */
 #define BL_CTRL_TRIG_POST	(BL_CTRL_TRIG_MODE + 16)
 #define BL_CTRL_TRIG_BLOCK	(BL_CTRL_TRIG_MODE + 20)
+#define BL_CTRL_PING		(BL_CTRL_TRIG_MODE + 24)	/* pong at + 2 */
 
 #endif /* _BEAGLELOGIC_PROTO_H */

@@ -30,6 +30,8 @@ static_assert(offsetof(struct bl_ctrl, bufs) == BL_CTRL_BUFS, "bl_*.S: ctrl layo
 static_assert(offsetof(struct bl_ctrl, trig_mode) == BL_CTRL_TRIG_MODE, "bl_*.S: ctrl layout");
 static_assert(offsetof(struct bl_ctrl, trig_post) == BL_CTRL_TRIG_POST, "bl_*.S: ctrl layout");
 static_assert(offsetof(struct bl_ctrl, trig_block) == BL_CTRL_TRIG_BLOCK, "bl_*.S: ctrl layout");
+static_assert(offsetof(struct bl_ctrl, ping) == BL_CTRL_PING, "bl_*.S: ctrl layout");
+static_assert(offsetof(struct bl_ctrl, pong) == BL_CTRL_PING + 2, "bl_*.S: ctrl layout");
 
 /* The image initialises the header: the driver checks it right after loading. */
 struct bl_ctrl bl_ctrl __attribute__((section(".prukit_ctrl"), used)) = {

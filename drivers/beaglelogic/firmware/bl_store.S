@@ -20,12 +20,16 @@
  *
  * Timing (the simulator's defaults; the sampler publishes a block every 32
  * cycles at 100 Msps in 16-bit units, and each bank holds a block for 64):
- * an idle poll round takes 8 cycles (XIN, two compares, the command
- * word's load: 3, compare, jump), a block 13 (XIN, compare, SBBO of 32
- * bytes: 8, two adds, compare), a full buffer's bookkeeping 14 more (the
- * count's store, the event, the next buffer's address: a load of 3).  So
- * the storer has taken each block at most 8 + 13 + 14 = 35 cycles after it
- * was published, within the 64; a trigger adds up to 18 (see below).
+ * an idle poll round takes 11 cycles (XIN, two compares, the command
+ * word's load: 3, compare, the ping's load: 3, compare and branch back), a
+ * block 13 (XIN, compare, SBBO of 32 bytes: 8, two adds, compare), a full
+ * buffer's bookkeeping 14 more (the count's store, the event, the next
+ * buffer's address: a load of 3).  So the storer has taken each block at
+ * most 11 + 13 + 14 = 38 cycles after it was published, within the 64; a
+ * trigger adds up to 18 (see below).  A new ping (the driver's, some ten a
+ * second while a reader waits) costs one round 3 cycles more (the answer's
+ * move and store, a jump); a round that stores nothing leaves the
+ * simulator free to skip the idle loop.
  *
  * GCC's PRU ABI: arguments in r14, r15, the result in r14; r4..r13 are
  * saved here; r2 is the stack pointer, r3.w2 the return address.
@@ -33,7 +37,8 @@
  * Registers: r4 number of the next block, r5 where it goes, r6 the end of
  * the current buffer, r7 its index, r8 c->nbufs, r9 c->bufsize, r10
  * buffers filled, r11 c->mode, r12 the event's R31 strobe, r13 the START
- * command word, r14 &ctrl, r19 stop flag, r21..r28 a block, r29 its number;
+ * command word, r14 &ctrl, r19 stop flag, r21..r28 a block, r29 its number,
+ * r15.w2 the offset of c->ping;
  * the trigger (below): r1.w2 the link, r15.w0 its state, r16 lanes or
  * mask, r17 bit or value, r18 the states to go to after arming, r20 a
  * count.
@@ -56,6 +61,12 @@
 	qblt	missed, r29, r4		/* r4 < r29: the bank was overwritten */
 	lbbo	&r0, r14, CTRL_COMMAND, 4
 	qbne	new_command, r0, r13
+	lbbo	&r0, r14, r15.w2, 4	/* r0.w0 the ping, r0.w2 the pong */
+	qbeq	1b, r0.w0, r0.w2
+	mov	r0.w2, r0.w0		/* a new ping: answer it (the ping goes */
+					/* back unchanged: the driver sends */
+					/* another only once this is answered) */
+	sbbo	&r0, r14, r15.w2, 4
 	jmp	1b
 2:
 	sbbo	&r21, r5, 0, BL_BLOCK_BYTES
@@ -113,6 +124,7 @@ bl_store:
 	ldi	r0, BL_FW_RUNNING
 	sbbo	&r0, r14, BL_CTRL_STATE, 4	/* the sampler waits for this */
 	sbbo	&r15, r14, CTRL_STATUS, 4	/* the answer: the driver starts it */
+	ldi	r15.w2, BL_CTRL_PING		/* beyond an immediate offset */
 	/*
 	 * The trigger: r15.w0 its state, r16, r17 and r18 its parameters
 	 * (after the answer, which is r15: the sampler starts milliseconds

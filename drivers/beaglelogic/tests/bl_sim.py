@@ -23,7 +23,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "vm/lib"))
 import bl_stim
 
-MAGIC, VERSION, SIZE = 0x4c474c42, 2, 56 + 4 * 128 + 24
+MAGIC, VERSION, SIZE = 0x4c474c42, 3, 56 + 4 * 128 + 28
 TRIG_BLOCK = 56 + 4 * 128 + 20
 START = 1 | 1 << 16
 ANSWER = 1 << 16 | 0x8000		# PRUKIT_CTRL_STATUS(1, BL_OK)
@@ -75,7 +75,8 @@ def run(prusim, fw, work, unit, div, mode, nbufs, bufsize, periods, trig=(0, 0, 
     for n in ("d0.bin", "d1.bin", "ddr.bin"):
         with open(work + "/" + n, "rb") as f:
             out.append(f.read())
-    f0 = struct.unpack("<IHHII10I", out[0][:56]) + struct.unpack("<I", out[0][TRIG_BLOCK:])
+    f0 = (struct.unpack("<IHHII10I", out[0][:56]) +
+          struct.unpack("<I", out[0][TRIG_BLOCK:TRIG_BLOCK + 4]))
     f1 = struct.unpack("<IHHII10I", out[1])
     return f0, f1, out[2]
 

@@ -67,6 +67,38 @@ def sim_dir():
     raise RuntimeError("no simulated PRU-ICSS in debugfs")
 
 
+def single_step(core, on):
+    """Halt PRU core as a debugger does, behind remoteproc's back, or let it
+    run again: pru_rproc's debugfs "single_step" (1: one instruction, then
+    halted, as a firmware's HALT or a fault leaves a core; 0: on again).
+    remoteproc still says "running"."""
+    path = "/sys/kernel/debug/remoteproc/%s/single_step" % os.path.basename(pru_rproc(core))
+    err = write_attr(path, "1" if on else "0")
+    if err:
+        raise OSError(err, "cannot write " + path)
+
+
+def sim_pru_state(core):
+    """What the simulated PRU-ICSS says of core: "running", "halted", ..."""
+    with open(sim_dir() + "/stats") as f:
+        for ln in f:
+            w = ln.split()
+            if w[:2] == ["pru%d" % core, "state"]:
+                return w[2]
+    return None
+
+
+def halt_pru(core, timeout=10):
+    """single_step(core, True), and the core's state in the simulator once
+    it left "running" (the simulator takes the CONTROL write on its own
+    thread), or "running" after timeout seconds."""
+    single_step(core, True)
+    end = time.monotonic() + timeout
+    while sim_pru_state(core) == "running" and time.monotonic() < end:
+        time.sleep(0.05)
+    return sim_pru_state(core)
+
+
 def pad_owners():
     """{pad offset: the device whose pinctrl state holds it} from the pin
     controller's debugfs: pinctrl-single's (its pin N is pad 0x800 + 4 * N)."""
