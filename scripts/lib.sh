@@ -48,15 +48,17 @@ prukit_drivers() {
 }
 
 # vm_cases [TOP] - the VM test cases, one "NAME PATH" line each, sorted by
-# name: the executable files in TOP/tests/vm/cases and in every driver's
+# name: the executable files in TOP/tests/vm/cases and in each driver's
 # TOP/drivers/<driver>/tests/vm/cases (TOP: PRUKIT_TOP; the drivers of
-# TOP/drivers/registry).  The guest runs
-# them all in one boot, by name, from one directory (/prukit/tests), so two
-# cases with one name are an error: both are named on stderr, none is listed.
+# TOP/drivers/registry).  The guest runs them all in one boot, by name,
+# from one directory (/prukit/tests), so two cases with one name are an
+# error: both are named on stderr, none is listed.
 vm_cases() {
-	local top=${1:-$PRUKIT_TOP} d drivers
+	local top=${1:-$PRUKIT_TOP} d drivers dirs
 	drivers=$(prukit_drivers "$top") || return 1
-	for d in "$top"/tests/vm/cases $(printf "$top/drivers/%s/tests/vm/cases " $drivers); do
+	dirs=("$top/tests/vm/cases")
+	for d in $drivers; do dirs+=("$top/drivers/$d/tests/vm/cases"); done
+	for d in "${dirs[@]}"; do
 		[ -d "$d" ] || continue
 		# Executables only: not __pycache__, data files and the like.
 		find "$d" -maxdepth 1 -type f -perm -u+x -printf '%f %p\n'
@@ -78,17 +80,17 @@ vm_host_half() {
 
 # driver_checks [TOP] - each driver's own make check step, one "NAME MIN
 # PATH" line each: TOP/drivers/<driver>/tests/check.sh (the drivers of
-# TOP/drivers/registry), with MIN (the fewest
-# PASS:/FAIL: lines it must print, as step() takes it) from its line
-# "# prukit-check-min: N", or "none" when it declares none.
+# TOP/drivers/registry), with MIN (the fewest PASS:/FAIL: lines it must
+# print, as step() takes it) from its line "# prukit-check-min: N", or
+# "none" when it declares none.
 driver_checks() {
 	local top=${1:-$PRUKIT_TOP} f d min drivers
 	drivers=$(prukit_drivers "$top") || return 1
-	for f in $(printf "$top/drivers/%s/tests/check.sh " $drivers); do
+	for d in $drivers; do
+		f=$top/drivers/$d/tests/check.sh
 		[ -f "$f" ] || continue
-		d=${f%/tests/check.sh}
 		min=$(sed -n 's/^# prukit-check-min: *\([0-9][0-9]*\) *$/\1/p' "$f" | head -n 1)
-		echo "${d##*/} ${min:-none} $f"
+		echo "$d ${min:-none} $f"
 	done
 }
 
