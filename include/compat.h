@@ -297,11 +297,19 @@ static inline void prukit_drm_fb_vunmap(struct drm_plane_state *state, void *vad
  * renamed drm_fbdev_ttm_setup() in v6.11 ("drm/fbdev-generic: Convert to
  * fbdev-ttm"; its code stays generic, in drm_ttm_helper.ko).  v6.11's
  * drm_fbdev_shmem_setup() maps the GEM object's shmem pages to fbdev
- * clients with deferred I/O instead; that sets page->mapping of shmem pages
- * (fb_defio.c) and, once a client has written through an mmap of
- * /dev/fbN, freeing the object at unbind loops for ever in
- * shmem_undo_range() (seen on 6.12 in 84-hub75): fbdev-shmem only where
- * the kernel lacks drm_ttm_helper.  v6.13's drm_client_setup() would need
+ * clients with deferred I/O instead, and freeing the object at unbind then
+ * loops for ever in shmem_undo_range() once a client has faulted a page
+ * through an mmap of /dev/fbN (seen on 6.12 in 84-hub75).  The cause, read
+ * in 6.12's sources: fb_deferred_io_fault() sets the shmem page's
+ * page->mapping to /dev/fbN's address space and nothing sets it back (the
+ * last close clears it, to NULL, only on written pages); at the object's
+ * last fput(), shmem_undo_range()'s first pass skips a folio of another
+ * mapping and its second pass takes it for one swapped out meanwhile and
+ * retries it, for ever.  Mainline fixed fb_defio in "fb_defio: do not use
+ * deprecated page->mapping, index fields" (6cdef2ddce2b, from v6.15 as far
+ * as the merge mails say), not backported to 6.12.  So fbdev-shmem only
+ * where the kernel lacks drm_ttm_helper, whose generic fbdev draws into a
+ * vmalloc'ed shadow buffer.  v6.13's drm_client_setup() would need
  * .fbdev_probe in the driver.
  */
 #if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 11, 0) && IS_ENABLED(CONFIG_DRM_TTM_HELPER)
