@@ -86,9 +86,9 @@ overlays_install: overlays
 # the order of drivers/registry.  One file rather than one per driver, so
 # that installing a newer prukit replaces the rules of a driver it renamed
 # or dropped instead of leaving them behind.
-PRUKIT_DRIVERS := $(shell awk '/^[a-z0-9_]+[ \t]/ { print $$1 }' $(CURDIR)/drivers/registry)
+include $(CURDIR)/drivers/registry.mk
 UDEV_RULES := udev/60-prukit.rules \
-	$(foreach d,$(PRUKIT_DRIVERS),$(sort $(wildcard drivers/$(d)/udev/*.rules)))
+	$(foreach d,$(prukit_drivers),$(sort $(wildcard drivers/$(d)/udev/*.rules)))
 
 # Generated on every run (it takes no time): a rules file removed since the
 # last run is gone from the result too, which modification times would miss.

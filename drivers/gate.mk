@@ -10,8 +10,8 @@
 # variable is set in the driver's own directory, so it reaches no other.
 prukit-driver := $(notdir $(patsubst %/,%,$(src)))
 prukit-config := CONFIG_PRUKIT_$(shell echo '$(patsubst prukit_%,%,$(prukit-driver))' | tr a-z A-Z)
-prukit-needs := $(addprefix CONFIG_,$(subst $(comma), ,$(shell awk -v d='$(prukit-driver)' \
-	'$$1 == d { print $$2 }' $(prukit_top)/drivers/registry)))
+include $(prukit_top)/drivers/registry.mk
+prukit-needs := $(call prukit_needs_of,$(prukit-driver))
 ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)
 $(prukit-config) ?= m
 endif

@@ -88,6 +88,7 @@ int prukit_pru_event(struct device *dev, const char *name);
 				  (u64)(timeout_ms) * USEC_PER_MSEC, false, pru);	\
 	__done ? 0 : __running ? __ret : -EPIPE;					\
 })
+
 int devm_prukit_pru_request_irq(struct device *dev, const char *name,
 				irq_handler_t handler, irq_handler_t thread_fn,
 				unsigned long flags, void *data);

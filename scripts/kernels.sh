@@ -49,7 +49,7 @@ copy_sources() {
 	mkdir -p "$dest"
 	(cd "$PRUKIT_TOP" &&
 		find Kbuild include drivers sim tests/kmod -type f \( -name Kbuild -o -name '*.c' -o -name '*.h' \
-			-o -path drivers/registry -o -path drivers/gate.mk \) \
+			-o -path drivers/registry -o -path drivers/registry.mk -o -path drivers/gate.mk \) \
 			-print0 | xargs -0 cp --parents -t "$dest")
 }
 
