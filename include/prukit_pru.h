@@ -11,16 +11,19 @@
 
 #include <linux/interrupt.h>
 #include <linux/iopoll.h>
+#include <linux/remoteproc.h>
 #include <linux/types.h>
 
 #include "prukit/pru_ctrl.h"
 
 struct device;
 struct device_node;
-struct rproc;
 
 /* AM335x GPIO banks a PRU can drive over OCP (prukit_pru_gpio_bank()) */
 #define PRUKIT_PRU_GPIO_BANKS		4
+
+/* remoteproc sysfs files the layer makes read-only while it holds a core */
+#define PRUKIT_PRU_RPROC_FILES		4
 
 /* Default for firmware answers: generous, for emulated PRUs too. */
 #define PRUKIT_PRU_TIMEOUT_MS		5000
@@ -33,7 +36,14 @@ struct rproc;
  * @firmware: the consumer's "firmware-name" entry for it, or NULL
  * @via_pru_rproc: taken with pru_rproc_get() (the kernel's PRU remoteproc
  *	driver owns the core), not with rproc_get_by_phandle()
- * @booted: prukit_pru_boot() succeeded and no shutdown followed
+ * @booted: prukit_pru_boot() succeeded and no shutdown followed: the
+ *	driver holds a reference on the core's power
+ * @subdev: how remoteproc tells the layer of each start and stop of the core
+ * @gen: starts and stops of the core seen by @subdev (under rproc->lock)
+ * @boot_gen: @gen right after the driver's boot; while the two agree, the
+ *	core runs what the driver booted
+ * @sysfs_mode: the modes of remoteproc's sysfs files before the layer made
+ *	them read-only (0: no such file)
  * @seq: sequence number of the last command sent
  *
  * Drivers read @rproc and @dev; the rest belongs to the layer.
@@ -45,6 +55,10 @@ struct prukit_pru {
 	const char *firmware;
 	bool via_pru_rproc;
 	bool booted;
+	struct rproc_subdev subdev;
+	unsigned int gen;
+	unsigned int boot_gen;
+	umode_t sysfs_mode[PRUKIT_PRU_RPROC_FILES];
 	u16 seq;
 };
 
@@ -73,7 +87,7 @@ int prukit_pru_event(struct device *dev, const char *name);
  *
  * The one way prukit drivers poll their firmware: the kernel's
  * read_poll_timeout(), plus what a PRU adds: a core stopped behind the
- * driver's back (remoteproc sysfs) ends the wait at once.  May sleep.
+ * driver's back (a crash report, say) ends the wait at once.  May sleep.
  *
  * Return: 0 once @cond held, -EPIPE if the core stopped before it did,
  * -ETIMEDOUT.

@@ -343,9 +343,10 @@ second_boot() {
 
 # Loaded in this order at boot (no udev loads them): the kernel's PRU
 # drivers (modprobe.d/prukit.conf brings prukit_pru with pru_rproc), the
-# rpmsg transport and rpmsg_pru, the simulator's test port and the test
-# consumer.
-PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port pru_test_consumer}
+# rpmsg transport and rpmsg_pru and the simulator's test port.  Not the
+# test consumer: it holds PRU0 as a prukit driver does, which locks PRU0's
+# remoteproc sysfs files; the tests that use it load it (consumer_load).
+PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port}
 
 cmd=${1:-}
 shift || true

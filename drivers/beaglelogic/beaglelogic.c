@@ -114,7 +114,7 @@ struct bl_buf {
  * @ctrl: their control blocks while the firmware runs
  * @event: the storer's system event
  * @gone: the platform device was unbound: every call fails with -ENODEV
- * @stopped: a core stopped behind the driver's back: -EPIPE
+ * @stopped: a core crashed or restarted behind the driver's back: -EPIPE
  * @samplerate: samples per second, 100 MHz / an integer
  * @unit: BL_SAMPLEUNIT_*
  * @flags: BL_TRIGGERFLAGS_*

@@ -28,6 +28,7 @@
 #include <linux/firmware.h>
 #include <linux/io.h>
 #include <linux/jiffies.h>
+#include <linux/kernfs.h>
 #include <linux/list.h>
 #include <linux/module.h>
 #include <linux/mutex.h>
@@ -38,6 +39,7 @@
 #include <linux/platform_device.h>
 #include <linux/remoteproc.h>
 #include <linux/slab.h>
+#include <linux/sysfs.h>
 
 #include "compat.h"
 #include "prukit_pru.h"
@@ -146,7 +148,8 @@ static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node 
 	}
 	if (PTR_ERR(rproc) != -ENODEV && PTR_ERR(rproc) != -EPROBE_DEFER) {
 		dev_err(dev, "PRU %pOF not available: pru_rproc_get() says %pe%s\n", np, rproc,
-			PTR_ERR(rproc) == -EBUSY ? " (another driver holds it)" : "");
+			PTR_ERR(rproc) == -EBUSY ?
+			" (another driver holds it, or it runs firmware)" : "");
 		return rproc;
 	}
 	if (PTR_ERR(rproc) == -ENODEV) {
@@ -177,11 +180,90 @@ static struct rproc *prukit_pru_find(struct prukit_pru *pru, struct device_node 
 				     np));
 }
 
+/*
+ * remoteproc's sysfs files that change a core: the ones mainline's
+ * rproc_is_visible() makes read-only for a core with sysfs_read_only.
+ */
+static const char * const prukit_pru_rproc_files[PRUKIT_PRU_RPROC_FILES] = {
+	"state", "firmware", "recovery", "coredump",
+};
+
+/*
+ * Lock users out of the core's remoteproc sysfs files while a driver holds
+ * it, on every kernel: pru_rproc_get() sets rproc->sysfs_read_only, but
+ * remoteproc applies it only when it registers the core, and 5.10 has no
+ * such flag at all.  Files without write permission cannot be opened for
+ * writing in sysfs, by root either (KERNFS_ROOT_EXTRA_OPEN_PERM_CHECK).  A
+ * file opened before stays writable through that descriptor; the layer's
+ * boot and shutdown check what happened under rproc->lock.
+ */
+static void prukit_pru_sysfs_lock(struct prukit_pru *pru, bool lock)
+{
+	struct kobject *kobj = &pru->rproc->dev.kobj;
+	unsigned int i;
+	umode_t mode;
+	int ret;
+
+	for (i = 0; i < PRUKIT_PRU_RPROC_FILES; i++) {
+		struct attribute attr = { .name = prukit_pru_rproc_files[i] };
+		struct kernfs_node *kn;
+
+		if (!lock) {
+			if (pru->sysfs_mode[i] &&
+			    sysfs_chmod_file(kobj, &attr, pru->sysfs_mode[i]))
+				dev_warn(pru->dev, "cannot give PRU %s's %s its mode back\n",
+					 dev_name(&pru->rproc->dev), attr.name);
+			continue;
+		}
+		kn = kernfs_find_and_get(kobj->sd, attr.name);
+		if (!kn)
+			continue;
+		mode = kn->mode & 0777;
+		kernfs_put(kn);
+		ret = sysfs_chmod_file(kobj, &attr, mode & ~0222);
+		if (ret)
+			dev_warn(pru->dev, "cannot make PRU %s's %s read-only: %d\n",
+				 dev_name(&pru->rproc->dev), attr.name, ret);
+		else
+			pru->sysfs_mode[i] = mode;
+	}
+}
+
+/*
+ * The layer's view of the core's starts and stops: a remoteproc subdevice,
+ * whose callbacks remoteproc makes under rproc->lock at every start and
+ * stop of the core, whoever asks for it and whichever way (a stop for a
+ * crash's recovery included).  Each one ends the generation the driver's
+ * boot began.
+ */
+static int prukit_pru_subdev_start(struct rproc_subdev *subdev)
+{
+	struct prukit_pru *pru = container_of(subdev, struct prukit_pru, subdev);
+
+	WRITE_ONCE(pru->gen, pru->gen + 1);
+	return 0;
+}
+
+static void prukit_pru_subdev_stop(struct rproc_subdev *subdev, bool crashed)
+{
+	struct prukit_pru *pru = container_of(subdev, struct prukit_pru, subdev);
+
+	WRITE_ONCE(pru->gen, pru->gen + 1);
+	if (crashed && pru->booted)
+		dev_err(pru->dev, "PRU %s crashed: remoteproc restarts it for recovery, without the driver's state\n",
+			dev_name(&pru->rproc->dev));
+}
+
 static void prukit_pru_release(void *data)
 {
 	struct prukit_pru *pru = data;
+	struct rproc *rproc = pru->rproc;
 
 	prukit_pru_shutdown(pru);
+	mutex_lock(&rproc->lock);
+	rproc_remove_subdev(rproc, &pru->subdev);
+	mutex_unlock(&rproc->lock);
+	prukit_pru_sysfs_lock(pru, false);
 	if (pru->via_pru_rproc) {
 		prukit_pru_rproc_put(pru->rproc);
 	} else {
@@ -196,17 +278,21 @@ static void prukit_pru_release(void *data)
  * @index: which entry of "ti,prus"
  *
  * The core is held exclusively until @dev unbinds; then it is shut down (if
- * prukit_pru_boot() started it) and released.  A device link makes the
- * driver core unbind @dev before the core's device goes away.  @dev gets a
- * 32-bit DMA mask: the PRU's OCP master port addresses 32 bits.
+ * prukit_pru_boot() started it) and released.  Meanwhile the core's
+ * remoteproc sysfs files that change it (state, firmware, recovery,
+ * coredump) are read-only, for root too.  A device link makes the driver
+ * core unbind @dev before the core's device goes away.  @dev gets a 32-bit
+ * DMA mask: the PRU's OCP master port addresses 32 bits.
  *
  * Return: the core, or an ERR_PTR(): -EPROBE_DEFER until the core's driver
  * registered it, -ENODEV for a disabled core, -EBUSY if another driver holds
- * it, -EINVAL for a bad "ti,prus" (each with a message; a deferral's is its
- * reason in devices_deferred).
+ * it or it is not offline (someone runs firmware on it), -EINVAL for a bad
+ * "ti,prus" (each with a message; a deferral's is its reason in
+ * devices_deferred).
  */
 struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 {
+	enum rproc_state state;
 	struct device_node *np;
 	struct prukit_pru *pru;
 	struct rproc *rproc;
@@ -233,6 +319,32 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 			return ERR_PTR(ret);
 		}
 	}
+
+	/*
+	 * A core that runs someone else's firmware is not taken: the driver
+	 * would lock that user out of stopping it.  (pru_rproc_get() refuses it
+	 * already, as it sets the consumer's firmware.)
+	 */
+	mutex_lock(&rproc->lock);
+	state = rproc->state;
+	if (state == RPROC_OFFLINE) {
+		pru->subdev.start = prukit_pru_subdev_start;
+		pru->subdev.stop = prukit_pru_subdev_stop;
+		rproc_add_subdev(rproc, &pru->subdev);
+	}
+	mutex_unlock(&rproc->lock);
+	if (state != RPROC_OFFLINE) {
+		dev_err(dev, "PRU %s is not offline (it runs %s): stop it (echo stop > /sys/class/remoteproc/%s/state), then bind the driver\n",
+			dev_name(&rproc->dev), rproc->firmware, dev_name(&rproc->dev));
+		if (pru->via_pru_rproc) {
+			prukit_pru_rproc_put(rproc);
+		} else {
+			prukit_pru_unclaim(rproc);
+			rproc_put(rproc);
+		}
+		return ERR_PTR(-EBUSY);
+	}
+	prukit_pru_sysfs_lock(pru, true);
 	ret = devm_add_action_or_reset(dev, prukit_pru_release, pru);
 	if (ret)
 		return ERR_PTR(ret);
@@ -315,19 +427,23 @@ static int prukit_pru_check_irq_map(struct prukit_pru *pru, const char *firmware
  * @pru: the core
  * @firmware: file under /lib/firmware, or NULL for the "firmware-name" entry
  *
- * Fails with -EBUSY if the core already runs (started through remoteproc
- * sysfs, say): prukit never takes over firmware someone else started; and
- * if the firmware's .pru_irq_map maps a system event that the consumer's
- * node takes as its interrupt (the PRU remoteproc driver would dispose of
- * that interrupt at the core's stop); with -EINVAL if, with such an
- * interrupt, the file's sections cannot be read safely.
- * prukit_pru_shutdown(), or the driver unbinding, stops it again.
+ * Fails with -EBUSY if the core is not offline (crashed, or started through
+ * a remoteproc sysfs file opened before the driver took the core) or was
+ * started by someone else while this boot ran: prukit never takes over
+ * firmware someone else started; and if the firmware's .pru_irq_map maps a
+ * system event that the consumer's node takes as its interrupt (the PRU
+ * remoteproc driver would dispose of that interrupt at the core's stop);
+ * with -EINVAL if, with such an interrupt, the file's sections cannot be
+ * read safely.  prukit_pru_shutdown(), or the driver unbinding, stops it
+ * again.
  *
  * Return: 0 or a negative errno (also logged).
  */
 int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
 {
 	struct rproc *rproc = pru->rproc;
+	enum rproc_state state;
+	bool alone;
 	int ret;
 
 	if (pru->booted)
@@ -338,9 +454,13 @@ int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
 			dev_name(&rproc->dev));
 		return -EINVAL;
 	}
-	if (READ_ONCE(rproc->state) != RPROC_OFFLINE) {
-		dev_err(pru->dev, "PRU %s already runs %s; stop it first (remoteproc sysfs \"state\")\n",
-			dev_name(&rproc->dev), rproc->firmware);
+	mutex_lock(&rproc->lock);
+	state = rproc->state;
+	mutex_unlock(&rproc->lock);
+	if (state != RPROC_OFFLINE) {
+		dev_err(pru->dev, "PRU %s is %s, not offline (firmware %s): unbind the driver to stop it\n",
+			dev_name(&rproc->dev), state == RPROC_CRASHED ? "crashed" : "running",
+			rproc->firmware);
 		return -EBUSY;
 	}
 	ret = prukit_pru_check_irq_map(pru, firmware);
@@ -358,26 +478,69 @@ int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
 			firmware, ret);
 		return ret;
 	}
+	/*
+	 * rproc_boot() of a core that runs is only a reference: if someone
+	 * started the core between the check above and the boot, this was one.
+	 * Either way the driver's is one of the references now.
+	 */
+	mutex_lock(&rproc->lock);
+	alone = atomic_read(&rproc->power) == 1 && rproc->state == RPROC_RUNNING;
+	pru->boot_gen = pru->gen;
+	mutex_unlock(&rproc->lock);
+	if (!alone) {
+		dev_err(pru->dev, "PRU %s was started by someone else while the driver booted it: not taken over\n",
+			dev_name(&rproc->dev));
+		rproc_shutdown(rproc);
+		return -EBUSY;
+	}
 	pru->booted = true;
 	pru->seq = 0;
 	return 0;
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_boot);
 
+/* A core that does not stop after this many shutdowns has no one to stop it. */
+#define PRUKIT_PRU_STOP_TRIES	8
+
 /**
  * prukit_pru_shutdown() - stop the core that prukit_pru_boot() started
  * @pru: the core
  *
- * Does nothing if the driver did not boot it.  A core stopped behind the
- * driver's back (remoteproc sysfs) is only forgotten.
+ * Does nothing if the driver did not boot it.  Otherwise the core ends
+ * offline, whatever happened to it since: every reference a start took
+ * while the driver held it goes (the driver's buffers go next), and a core
+ * remoteproc marked crashed is stopped too.
  */
 void prukit_pru_shutdown(struct prukit_pru *pru)
 {
+	struct rproc *rproc = pru->rproc;
+	bool up = false;
+	unsigned int i;
+
 	if (!pru->booted)
 		return;
 	pru->booted = false;
-	if (READ_ONCE(pru->rproc->state) == RPROC_RUNNING)
-		rproc_shutdown(pru->rproc);
+	for (i = 0; i < PRUKIT_PRU_STOP_TRIES; i++) {
+		mutex_lock(&rproc->lock);
+		/*
+		 * A crash report leaves a PRU running (pru_rproc disables
+		 * recovery and halts nothing) and the core "crashed" with its
+		 * references, which rproc_shutdown() refuses on 6.1 and 6.12
+		 * (5.10 does not check): what runs is stopped as a running core.
+		 */
+		if (rproc->state == RPROC_CRASHED)
+			rproc->state = RPROC_RUNNING;
+		up = rproc->state == RPROC_RUNNING;
+		mutex_unlock(&rproc->lock);
+		if (!up)
+			break;
+		if (i == 1)
+			dev_warn(pru->dev, "PRU %s was started again behind the driver's back: stopping it\n",
+				 dev_name(&rproc->dev));
+		rproc_shutdown(rproc);
+	}
+	if (up)
+		dev_err(pru->dev, "PRU %s did not stop\n", dev_name(&rproc->dev));
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_shutdown);
 
@@ -385,15 +548,19 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_shutdown);
  * prukit_pru_running() - whether the driver's firmware still runs
  * @pru: the core
  *
- * False once someone stopped the core through remoteproc sysfs (or it
- * crashed): a driver checks it before it waits for the firmware, and the
- * waits below return -EPIPE when it turns false.
+ * False once the core stopped, crashed or started again since the driver
+ * booted it (a remoteproc sysfs file opened before the driver took it, a
+ * crash report, remoteproc's recovery): a driver checks it before it waits
+ * for the firmware, and the waits below return -EPIPE when it turns false.
+ * A snapshot without rproc->lock, as polling wants it: the boot and the
+ * shutdown, which change the core, decide under the lock.
  *
  * Return: true while the core runs the firmware prukit_pru_boot() started.
  */
 bool prukit_pru_running(struct prukit_pru *pru)
 {
-	return pru->booted && READ_ONCE(pru->rproc->state) == RPROC_RUNNING;
+	return pru->booted && READ_ONCE(pru->gen) == pru->boot_gen &&
+	       READ_ONCE(pru->rproc->state) == RPROC_RUNNING;
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_running);
 
@@ -457,6 +624,19 @@ int prukit_pru_ctrl_check(struct prukit_pru *pru, void __iomem *ctrl, u32 magic,
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_check);
 
+/* What became of a core that no longer runs the driver's firmware */
+static const char *prukit_pru_lost(struct prukit_pru *pru)
+{
+	switch (READ_ONCE(pru->rproc->state)) {
+	case RPROC_CRASHED:
+		return "crashed";
+	case RPROC_RUNNING:
+		return "was started again behind the driver's back";
+	default:
+		return "stopped";
+	}
+}
+
 /*
  * Poll the status word until the firmware is ready (and, unless @any_seq,
  * answered @want_seq), the core stops or time runs out.  Looks every
@@ -476,8 +656,8 @@ static int prukit_pru_poll(struct prukit_pru *pru, void __iomem *ctrl, u32 want_
 	if (!ret)
 		*status = v;
 	else if (ret == -EPIPE)
-		dev_err(pru->dev, "PRU %s stopped while the driver waited for %s\n",
-			dev_name(&pru->rproc->dev), what);
+		dev_err(pru->dev, "PRU %s %s while the driver waited for %s\n",
+			dev_name(&pru->rproc->dev), prukit_pru_lost(pru), what);
 	else
 		dev_err(pru->dev, "%s on PRU %s: no answer to %s within %u ms\n",
 			pru->rproc->firmware, dev_name(&pru->rproc->dev), what, timeout_ms);

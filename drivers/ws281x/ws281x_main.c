@@ -126,7 +126,7 @@ struct ws281x_led {
  * @kref: the last reference (device, open file, mapping) frees it
  * @lock: serialises frames, settings and start/stop
  * @gone: the platform device was unbound: every call fails with -ENODEV
- * @stopped: a core stopped behind the driver's back: -EPIPE
+ * @stopped: a core crashed or restarted behind the driver's back: -EPIPE
  * @dirty: an LED changed the frame while no room was free: the next event
  *	shows it
  * @events: events received from the cores

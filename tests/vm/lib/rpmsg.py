@@ -144,6 +144,23 @@ def rproc_stop(core):
             f.write("stop")
 
 
+def rproc_crash(core, timeout=10):
+    """Report a crash of PRU core as remoteproc's debugfs "crash" file does
+    (pru_rproc itself detects none); wait until remoteproc says "crashed"
+    (pru_rproc disables recovery).  The PRU itself runs on.  True once it
+    says so."""
+    path = "/sys/kernel/debug/remoteproc/%s/crash" % os.path.basename(pru_rproc(core))
+    err = write_attr(path, "2")
+    if err:
+        raise OSError(err, "cannot write " + path)
+    end = time.monotonic() + timeout
+    while rproc_state(core) != "crashed":
+        if time.monotonic() > end:
+            return False
+        time.sleep(0.05)
+    return True
+
+
 def rproc_start(core, firmware):
     r = pru_rproc(core)
     rproc_stop(core)

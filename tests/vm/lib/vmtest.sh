@@ -101,6 +101,20 @@ rproc_stop() {
 	return 0
 }
 
+# rproc_crash N - report a crash of PRU N as remoteproc's debugfs "crash"
+# file does (pru_rproc itself detects none); wait until remoteproc says
+# "crashed" (pru_rproc disables recovery).  The PRU itself runs on.
+rproc_crash() {
+	local r i=0
+	r=$(pru_rproc "$1") || return 1
+	echo 2 >"/sys/kernel/debug/remoteproc/$(basename "$r")/crash" || return 1
+	while [ "$(cat "$r/state")" != crashed ]; do
+		i=$((i + 1))
+		[ $i -gt 100 ] && return 1
+		sleep 0.1
+	done
+}
+
 # The test consumer's device directory in sysfs.
 consumer_dir() {
 	local d
@@ -108,4 +122,22 @@ consumer_dir() {
 		[ -e "$d/irq_count" ] && { echo "${d%/}"; return 0; }
 	done
 	return 1
+}
+
+# consumer_load - load the test consumer (tests/kmod/pru_test_consumer.c),
+# which takes PRU0 as a prukit driver does: while it is bound, PRU0's
+# remoteproc sysfs files that change the core are read-only.  So it is not
+# loaded at boot; the tests that use it load it and consumer_unload it.
+consumer_load() {
+	local i=0
+	modprobe pru_test_consumer || return 1
+	while ! consumer_dir >/dev/null; do
+		i=$((i + 1))
+		[ $i -gt 50 ] && return 1
+		sleep 0.1
+	done
+}
+
+consumer_unload() {
+	! grep -qw pru_test_consumer /proc/modules || rmmod pru_test_consumer
 }
