@@ -263,7 +263,8 @@ static inline void prukit_dma_free_noncoherent(struct device *dev, size_t size, 
  */
 #if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 12, 0)
 #include <drm/drm_gem_atomic_helper.h>
-#define PRUKIT_DRM_SHADOW_PLANE_FUNCS	DRM_GEM_SIMPLE_DISPLAY_PIPE_SHADOW_PLANE_FUNCS
+#define PRUKIT_DRM_SHADOW_PLANE_FUNCS		DRM_GEM_SHADOW_PLANE_FUNCS
+#define PRUKIT_DRM_SHADOW_PLANE_HELPER_FUNCS	DRM_GEM_SHADOW_PLANE_HELPER_FUNCS
 static inline void *prukit_drm_fb_vmap(struct drm_plane_state *state)
 {
 	return to_drm_shadow_plane_state(state)->map[0].vaddr;
@@ -273,9 +274,13 @@ static inline void prukit_drm_fb_vunmap(struct drm_plane_state *state, void *vad
 {
 }
 #elif LINUX_VERSION_CODE < KERNEL_VERSION(5, 11, 0)
+#include <drm/drm_atomic_state_helper.h>
 #include <drm/drm_gem_shmem_helper.h>
 #define PRUKIT_DRM_SHADOW_PLANE_FUNCS \
-	.prepare_fb = drm_gem_fb_simple_display_pipe_prepare_fb
+	.reset = drm_atomic_helper_plane_reset, \
+	.atomic_duplicate_state = drm_atomic_helper_plane_duplicate_state, \
+	.atomic_destroy_state = drm_atomic_helper_plane_destroy_state
+#define PRUKIT_DRM_SHADOW_PLANE_HELPER_FUNCS	.prepare_fb = drm_gem_fb_prepare_fb
 static inline void *prukit_drm_fb_vmap(struct drm_plane_state *state)
 {
 	return drm_gem_shmem_vmap(state->fb->obj[0]);
@@ -287,6 +292,85 @@ static inline void prukit_drm_fb_vunmap(struct drm_plane_state *state, void *vad
 }
 #else
 #error "prukit's DRM drivers build for v5.10 and v5.12 or later"
+#endif
+
+/*
+ * Telling an imported framebuffer's exporter that the CPU reads it:
+ * drm_gem_fb_begin_cpu_access()/end_cpu_access(), which 6.1 has and 5.10
+ * has not.  Decided by the kernel's <drm/drm_gem_framebuffer_helper.h> (the
+ * top-level Kbuild: PRUKIT_HAVE_DRM_GEM_FB_CPU_ACCESS); without them, shmem
+ * BOs of the driver's own are all the CPU reads.
+ */
+#ifdef PRUKIT_HAVE_DRM_GEM_FB_CPU_ACCESS
+#define prukit_drm_fb_begin_cpu_access(fb) drm_gem_fb_begin_cpu_access(fb, DMA_FROM_DEVICE)
+#define prukit_drm_fb_end_cpu_access(fb)   drm_gem_fb_end_cpu_access(fb, DMA_FROM_DEVICE)
+#else
+#define prukit_drm_fb_begin_cpu_access(fb) ((void)(fb), 0)
+#define prukit_drm_fb_end_cpu_access(fb)   ((void)(fb))
+#endif
+
+/*
+ * No scaling of a plane: DRM_PLANE_NO_SCALING in <drm/drm_atomic_helper.h>
+ * on 6.1, DRM_PLANE_HELPER_NO_SCALING in <drm/drm_plane_helper.h> on 5.10
+ * (the same value).
+ */
+#include <drm/drm_atomic_helper.h>
+#ifndef DRM_PLANE_NO_SCALING
+#include <drm/drm_plane_helper.h>
+#define DRM_PLANE_NO_SCALING	DRM_PLANE_HELPER_NO_SCALING
+#endif
+
+/*
+ * The atomic helpers' callbacks take the whole atomic state: CRTCs'
+ * atomic_check, atomic_enable and atomic_disable from v5.11, planes'
+ * atomic_check and atomic_update from v5.13 ("drm/atomic: Pass the full
+ * state to ...").  Drivers write them that way and name them in
+ * PRUKIT_DRM_CRTC_HELPERS()/PRUKIT_DRM_PLANE_HELPERS(), after
+ * PRUKIT_DRM_*_HELPERS_COMPAT(), which defines, where the kernel passes a
+ * CRTC's or a plane's own state, functions taking that state and passing
+ * on the atomic state it belongs to (->state: the new state's during a
+ * check, the old state's during a commit, where the helpers set it).
+ */
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#define PRUKIT_DRM_CRTC_HELPERS_COMPAT(check, enable, disable)
+#define PRUKIT_DRM_CRTC_HELPERS(check, enable, disable) \
+	.atomic_check = check, .atomic_enable = enable, .atomic_disable = disable
+#else
+#define PRUKIT_DRM_CRTC_HELPERS_COMPAT(check, enable, disable)			\
+static int check##_compat(struct drm_crtc *crtc, struct drm_crtc_state *s)	\
+{										\
+	return check(crtc, s->state);						\
+}										\
+static void enable##_compat(struct drm_crtc *crtc, struct drm_crtc_state *old)	\
+{										\
+	enable(crtc, old->state);						\
+}										\
+static void disable##_compat(struct drm_crtc *crtc, struct drm_crtc_state *old)	\
+{										\
+	disable(crtc, old->state);						\
+}
+
+#define PRUKIT_DRM_CRTC_HELPERS(check, enable, disable) \
+	.atomic_check = check##_compat, .atomic_enable = enable##_compat, \
+	.atomic_disable = disable##_compat
+#endif
+#if LINUX_VERSION_CODE >= KERNEL_VERSION(5, 13, 0)
+#define PRUKIT_DRM_PLANE_HELPERS_COMPAT(check, update)
+#define PRUKIT_DRM_PLANE_HELPERS(check, update) \
+	.atomic_check = check, .atomic_update = update
+#else
+#define PRUKIT_DRM_PLANE_HELPERS_COMPAT(check, update)				\
+static int check##_compat(struct drm_plane *plane, struct drm_plane_state *s)	\
+{										\
+	return check(plane, s->state);						\
+}										\
+static void update##_compat(struct drm_plane *plane, struct drm_plane_state *old) \
+{										\
+	update(plane, old->state);						\
+}
+
+#define PRUKIT_DRM_PLANE_HELPERS(check, update) \
+	.atomic_check = check##_compat, .atomic_update = update##_compat
 #endif
 
 /*

@@ -25,10 +25,13 @@
 #include <linux/platform_device.h>
 #include <linux/property.h>
 
+#include <drm/drm_atomic.h>
 #include <drm/drm_atomic_helper.h>
 #include <drm/drm_connector.h>
 #include <drm/drm_damage_helper.h>
+#include <drm/drm_crtc.h>
 #include <drm/drm_drv.h>
+#include <drm/drm_encoder.h>
 #include <drm/drm_fourcc.h>
 #include <drm/drm_gem.h>
 #include <drm/drm_gem_framebuffer_helper.h>
@@ -37,7 +40,7 @@
 #include <drm/drm_modes.h>
 #include <drm/drm_modeset_helper_vtables.h>
 #include <drm/drm_probe_helper.h>
-#include <drm/drm_simple_kms_helper.h>
+#include <drm/drm_plane.h>
 
 #define PRUKIT_COMPAT_DRM
 #include "compat.h"
@@ -73,7 +76,9 @@ static const u32 hub75_formats[] = {
 /**
  * struct hub75 - one matrix display
  * @drm: the DRM device
- * @pipe: its one CRTC, plane and encoder
+ * @plane: its one plane, primary
+ * @crtc: its one CRTC
+ * @encoder: its one encoder, a placeholder between the CRTC and the panel
  * @connector: the panel
  * @mode: the panel's only mode
  * @dev: the platform device
@@ -89,14 +94,16 @@ static const u32 hub75_formats[] = {
  * @bl: the brightness control
  * @lock: serialises the commands to the PRU and protects what follows
  * @brightness: 0..HUB75_MAX_BRIGHTNESS
- * @running: the PRU refreshes the panel (the pipe is enabled)
+ * @running: the PRU refreshes the panel (the CRTC is enabled)
  * @front: the buffer last handed to the PRU
  * @prev: the rectangle the last update converted (into @front only)
  * @full: the next update converts the whole display
  */
 struct hub75 {
 	struct drm_device drm;
-	struct drm_simple_display_pipe pipe;
+	struct drm_plane plane;
+	struct drm_crtc crtc;
+	struct drm_encoder encoder;
 	struct drm_connector connector;
 	struct drm_display_mode mode;
 	struct device *dev;
@@ -184,7 +191,7 @@ static int hub75_wait_taken(struct hub75 *h)
 }
 
 /* ------------------------------------------------------------------ */
-/* the display pipe                                                     */
+/* the display: plane, CRTC, encoder, connector                       */
 /* ------------------------------------------------------------------ */
 
 static enum hub75_format hub75_format_of(const struct drm_framebuffer *fb)
@@ -214,7 +221,7 @@ static void hub75_show(struct hub75 *h, struct drm_plane_state *state, const voi
 	lockdep_assert_held(&h->lock);
 	ret = hub75_wait_taken(h);
 	if (ret == -EPIPE) {
-		/* stopped through remoteproc: dark until the pipe is enabled again */
+		/* crashed or restarted: dark until the pipe is enabled again */
 		dev_warn(h->dev, "the PRU stopped: the panel stays dark\n");
 		h->running = false;
 		h->full = true;
@@ -240,20 +247,46 @@ static void hub75_show(struct hub75 *h, struct drm_plane_state *state, const voi
 	h->prev = *rect;
 }
 
-static void hub75_pipe_enable(struct drm_simple_display_pipe *pipe,
-			      struct drm_crtc_state *crtc_state,
-			      struct drm_plane_state *plane_state)
+/*
+ * The plane's image for the CPU, between hub75_fb_begin() and hub75_fb_end():
+ * the shadow-plane helpers mapped the framebuffer's BOs; an imported BO's
+ * exporter is told the CPU reads it.  NULL if there is none to read.
+ */
+static void *hub75_fb_begin(struct drm_plane_state *state)
 {
-	struct hub75 *h = drm_to_hub75(pipe->crtc.dev);
+	void *vaddr;
+
+	if (!state->fb)
+		return NULL;
+	vaddr = prukit_drm_fb_vmap(state);
+	if (IS_ERR_OR_NULL(vaddr))
+		return NULL;
+	if (prukit_drm_fb_begin_cpu_access(state->fb)) {
+		prukit_drm_fb_vunmap(state, vaddr);
+		return NULL;
+	}
+	return vaddr;
+}
+
+static void hub75_fb_end(struct drm_plane_state *state, void *vaddr)
+{
+	prukit_drm_fb_end_cpu_access(state->fb);
+	prukit_drm_fb_vunmap(state, vaddr);
+}
+
+static void hub75_crtc_atomic_enable(struct drm_crtc *crtc, struct drm_atomic_state *state)
+{
+	struct hub75 *h = drm_to_hub75(crtc->dev);
+	struct drm_plane_state *plane_state = h->plane.state;
 	struct hub75_rect all = { 0, 0, h->layout.width, h->layout.height };
 	void *vaddr;
 	int idx;
 
 	if (!drm_dev_enter(&h->drm, &idx))
 		return;
-	vaddr = prukit_drm_fb_vmap(plane_state);
+	vaddr = hub75_fb_begin(plane_state);
 	mutex_lock(&h->lock);
-	if (!IS_ERR_OR_NULL(vaddr)) {
+	if (vaddr) {
 		hub75_convert_plane(h, h->front, plane_state, vaddr, &all);
 		h->prev = all;
 		h->full = false;
@@ -261,14 +294,14 @@ static void hub75_pipe_enable(struct drm_simple_display_pipe *pipe,
 	if (!hub75_start(h))
 		h->running = true;
 	mutex_unlock(&h->lock);
-	if (!IS_ERR_OR_NULL(vaddr))
-		prukit_drm_fb_vunmap(plane_state, vaddr);
+	if (vaddr)
+		hub75_fb_end(plane_state, vaddr);
 	drm_dev_exit(idx);
 }
 
-static void hub75_pipe_disable(struct drm_simple_display_pipe *pipe)
+static void hub75_crtc_atomic_disable(struct drm_crtc *crtc, struct drm_atomic_state *state)
 {
-	struct hub75 *h = drm_to_hub75(pipe->crtc.dev);
+	struct hub75 *h = drm_to_hub75(crtc->dev);
 	int idx;
 
 	if (!drm_dev_enter(&h->drm, &idx))
@@ -282,75 +315,116 @@ static void hub75_pipe_disable(struct drm_simple_display_pipe *pipe)
 	drm_dev_exit(idx);
 }
 
-static void hub75_pipe_update(struct drm_simple_display_pipe *pipe,
-			      struct drm_plane_state *old_state)
+static void hub75_plane_atomic_update(struct drm_plane *plane, struct drm_atomic_state *state)
 {
-	struct hub75 *h = drm_to_hub75(pipe->crtc.dev);
-	struct drm_plane_state *state = pipe->plane.state;
+	struct hub75 *h = drm_to_hub75(plane->dev);
+	struct drm_plane_state *old_state = drm_atomic_get_old_plane_state(state, plane);
+	struct drm_plane_state *new_state = drm_atomic_get_new_plane_state(state, plane);
 	struct drm_rect damage;
 	struct hub75_rect rect;
 	void *vaddr;
 	int idx;
 
-	if (!state->fb || !state->visible)
+	if (!new_state->fb || !new_state->visible)
 		return;
-	if (!drm_atomic_helper_damage_merged(old_state, state, &damage))
+	if (!drm_atomic_helper_damage_merged(old_state, new_state, &damage))
 		return;
 	if (!drm_dev_enter(&h->drm, &idx))
 		return;
 	/* damage is in framebuffer coordinates, the display's start at src */
-	rect.x1 = max(damage.x1 - (state->src.x1 >> 16), 0);
-	rect.y1 = max(damage.y1 - (state->src.y1 >> 16), 0);
-	rect.x2 = max(damage.x2 - (state->src.x1 >> 16), 0);
-	rect.y2 = max(damage.y2 - (state->src.y1 >> 16), 0);
-	if (old_state->fb != state->fb ||
-	    old_state->src.x1 != state->src.x1 || old_state->src.y1 != state->src.y1)
+	rect.x1 = max(damage.x1 - (new_state->src.x1 >> 16), 0);
+	rect.y1 = max(damage.y1 - (new_state->src.y1 >> 16), 0);
+	rect.x2 = max(damage.x2 - (new_state->src.x1 >> 16), 0);
+	rect.y2 = max(damage.y2 - (new_state->src.y1 >> 16), 0);
+	if (old_state->fb != new_state->fb ||
+	    old_state->src.x1 != new_state->src.x1 || old_state->src.y1 != new_state->src.y1)
 		rect = (struct hub75_rect){ 0, 0, h->layout.width, h->layout.height };
 
-	vaddr = prukit_drm_fb_vmap(state);
-	if (IS_ERR_OR_NULL(vaddr))
+	vaddr = hub75_fb_begin(new_state);
+	if (!vaddr)
 		goto exit;
 	mutex_lock(&h->lock);
 	if (h->running)
-		hub75_show(h, state, vaddr, &rect);
+		hub75_show(h, new_state, vaddr, &rect);
 	else
 		h->full = true;
 	mutex_unlock(&h->lock);
-	prukit_drm_fb_vunmap(state, vaddr);
+	hub75_fb_end(new_state, vaddr);
 exit:
 	drm_dev_exit(idx);
 }
 
-static enum drm_mode_status hub75_pipe_mode_valid(struct drm_simple_display_pipe *pipe,
+/* The plane covers the whole display, unscaled; it is on while the CRTC is. */
+static int hub75_plane_atomic_check(struct drm_plane *plane, struct drm_atomic_state *state)
+{
+	struct drm_plane_state *plane_state = drm_atomic_get_new_plane_state(state, plane);
+	struct drm_crtc_state *crtc_state = NULL;
+
+	if (plane_state->crtc)
+		crtc_state = drm_atomic_get_new_crtc_state(state, plane_state->crtc);
+	return drm_atomic_helper_check_plane_state(plane_state, crtc_state, DRM_PLANE_NO_SCALING,
+						   DRM_PLANE_NO_SCALING, false, false);
+}
+
+static enum drm_mode_status hub75_crtc_mode_valid(struct drm_crtc *crtc,
 						  const struct drm_display_mode *mode)
 {
-	struct hub75 *h = drm_to_hub75(pipe->crtc.dev);
+	struct hub75 *h = drm_to_hub75(crtc->dev);
 
 	if (mode->hdisplay != h->mode.hdisplay || mode->vdisplay != h->mode.vdisplay)
 		return MODE_BAD;
 	return MODE_OK;
 }
 
-static int hub75_pipe_check(struct drm_simple_display_pipe *pipe,
-			    struct drm_plane_state *plane_state,
-			    struct drm_crtc_state *crtc_state)
+/* The panel's size, and the plane exactly while the CRTC is enabled. */
+static int hub75_crtc_atomic_check(struct drm_crtc *crtc, struct drm_atomic_state *state)
 {
-	struct hub75 *h = drm_to_hub75(pipe->crtc.dev);
+	struct drm_crtc_state *crtc_state = drm_atomic_get_new_crtc_state(state, crtc);
+	struct hub75 *h = drm_to_hub75(crtc->dev);
+	bool has_plane = crtc_state->plane_mask & drm_plane_mask(crtc->primary);
 
 	if (crtc_state->enable &&
 	    (crtc_state->mode.hdisplay != h->mode.hdisplay ||
 	     crtc_state->mode.vdisplay != h->mode.vdisplay))
 		return -EINVAL;
-	return 0;
+	if (has_plane != crtc_state->enable)
+		return -EINVAL;
+	return drm_atomic_add_affected_planes(state, crtc);
 }
 
-static const struct drm_simple_display_pipe_funcs hub75_pipe_funcs = {
-	.mode_valid = hub75_pipe_mode_valid,
-	.check = hub75_pipe_check,
-	.enable = hub75_pipe_enable,
-	.disable = hub75_pipe_disable,
-	.update = hub75_pipe_update,
+PRUKIT_DRM_PLANE_HELPERS_COMPAT(hub75_plane_atomic_check, hub75_plane_atomic_update)
+PRUKIT_DRM_CRTC_HELPERS_COMPAT(hub75_crtc_atomic_check, hub75_crtc_atomic_enable,
+			       hub75_crtc_atomic_disable)
+
+static const struct drm_plane_helper_funcs hub75_plane_helper_funcs = {
+	PRUKIT_DRM_SHADOW_PLANE_HELPER_FUNCS,
+	PRUKIT_DRM_PLANE_HELPERS(hub75_plane_atomic_check, hub75_plane_atomic_update),
+};
+
+static const struct drm_plane_funcs hub75_plane_funcs = {
+	.update_plane = drm_atomic_helper_update_plane,
+	.disable_plane = drm_atomic_helper_disable_plane,
+	.destroy = drm_plane_cleanup,
 	PRUKIT_DRM_SHADOW_PLANE_FUNCS,
+};
+
+static const struct drm_crtc_helper_funcs hub75_crtc_helper_funcs = {
+	.mode_valid = hub75_crtc_mode_valid,
+	PRUKIT_DRM_CRTC_HELPERS(hub75_crtc_atomic_check, hub75_crtc_atomic_enable,
+				hub75_crtc_atomic_disable),
+};
+
+static const struct drm_crtc_funcs hub75_crtc_funcs = {
+	.reset = drm_atomic_helper_crtc_reset,
+	.destroy = drm_crtc_cleanup,
+	.set_config = drm_atomic_helper_set_config,
+	.page_flip = drm_atomic_helper_page_flip,
+	.atomic_duplicate_state = drm_atomic_helper_crtc_duplicate_state,
+	.atomic_destroy_state = drm_atomic_helper_crtc_destroy_state,
+};
+
+static const struct drm_encoder_funcs hub75_encoder_funcs = {
+	.destroy = drm_encoder_cleanup,
 };
 
 static int hub75_connector_get_modes(struct drm_connector *connector)
@@ -782,16 +856,33 @@ static int hub75_mode_init(struct hub75 *h)
 	m->type = DRM_MODE_TYPE_DRIVER | DRM_MODE_TYPE_PREFERRED;
 	drm_mode_set_name(m);
 
+	ret = drm_universal_plane_init(drm, &h->plane, 0, &hub75_plane_funcs, hub75_formats,
+				       ARRAY_SIZE(hub75_formats), NULL, DRM_PLANE_TYPE_PRIMARY,
+				       NULL);
+	if (ret)
+		return ret;
+	drm_plane_helper_add(&h->plane, &hub75_plane_helper_funcs);
+	drm_plane_enable_fb_damage_clips(&h->plane);
+
+	ret = drm_crtc_init_with_planes(drm, &h->crtc, &h->plane, NULL, &hub75_crtc_funcs, NULL);
+	if (ret)
+		return ret;
+	drm_crtc_helper_add(&h->crtc, &hub75_crtc_helper_funcs);
+
+	ret = drm_encoder_init(drm, &h->encoder, &hub75_encoder_funcs, DRM_MODE_ENCODER_NONE,
+			       NULL);
+	if (ret)
+		return ret;
+	h->encoder.possible_crtcs = drm_crtc_mask(&h->crtc);
+
 	drm_connector_helper_add(&h->connector, &hub75_connector_helper_funcs);
 	ret = drm_connector_init(drm, &h->connector, &hub75_connector_funcs,
 				 DRM_MODE_CONNECTOR_Unknown);
 	if (ret)
 		return ret;
-	ret = drm_simple_display_pipe_init(drm, &h->pipe, &hub75_pipe_funcs, hub75_formats,
-					   ARRAY_SIZE(hub75_formats), NULL, &h->connector);
+	ret = drm_connector_attach_encoder(&h->connector, &h->encoder);
 	if (ret)
 		return ret;
-	drm_plane_enable_fb_damage_clips(&h->pipe.plane);
 	drm_mode_config_reset(drm);
 	return 0;
 }
