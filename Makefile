@@ -21,6 +21,8 @@
 #                         NeoPixel example, and shows what the pins did
 #   make bench            speed: the simulator on the host and in the VM, the layer's round
 #                         trip, rpmsg round trips, cycles per message, the drivers' figures
+#   make deb              Debian packages prukit-dkms, -firmware, -overlays, -tools
+#                         (arch all) into out/deb/, for a board's apt
 #   make check            everything CI runs; ends with "N passed, N failed"
 
 PRUKIT_VERSION := $(shell sed -n 's/^PACKAGE_VERSION="\(.*\)"/\1/p' $(CURDIR)/dkms.conf)
@@ -39,7 +41,7 @@ BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version
+	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version deb
 
 all: modules
 
@@ -168,6 +170,9 @@ demo:
 
 bench:
 	$(SCRIPTS)/bench.sh
+
+deb:
+	$(SCRIPTS)/deb.sh
 
 check:
 	$(SCRIPTS)/check.sh

@@ -16,10 +16,8 @@ work=$PRUKIT_TOP/out/dkms
 rm -rf "$work"
 mkdir -p "$work"/{source,tree,install}
 src=$work/source/prukit-$ver
-# What a release tarball (or a dkms-managed /usr/src/prukit-VER) holds.
-mkdir -p "$src"
-(cd "$PRUKIT_TOP" && git ls-files --cached --others --exclude-standard -- \
-	Kbuild Makefile dkms.conf include drivers sim | xargs cp --parents -t "$src")
+# What the prukit-dkms package (make deb) and a release hold.
+dkms_source "$src"
 
 dkms=(dkms --dkmstree "$work/tree" --sourcetree "$work/source" --installtree "$work/install")
 export ARCH=arm CROSS_COMPILE=arm-linux-gnueabihf-

@@ -138,3 +138,24 @@ callgrind_ir() {
 	[ -n "$ir" ] || { echo "FAIL: no callgrind summary for $fn"; return 1; }
 	echo "$ir"
 }
+
+# dkms_source DIR - what DKMS builds prukit from, as the prukit-dkms package
+# and a release hold it: the top Kbuild, Makefile and dkms.conf, include/,
+# the registry, and each registered driver's Kbuild, sources and headers
+# (its KUnit suite, tests, firmware, udev rules and servers left out).  Only
+# files git tracks.
+dkms_source() {
+	local dir=$1 d
+	mkdir -p "$dir"
+	(
+		cd "$PRUKIT_TOP" || exit 1
+		{
+			git ls-files -- Kbuild Makefile dkms.conf include \
+				drivers/registry drivers/registry.mk drivers/gate.mk
+			for d in $(prukit_drivers); do
+				git ls-files -- "drivers/$d/Kbuild" "drivers/$d/*.c" "drivers/$d/*.h" |
+					grep -v -e '/[^/]*/[^/]*/' -e '_kunit\.c$'
+			done
+		} | xargs cp --parents -t "$dir"
+	)
+}
