@@ -24,10 +24,17 @@ saw 420 KiB go in one quarter and not come back, 42 KiB per cycle of that
 quarter).  MemAvailable, measured before, moved more still (the test's
 own Python clients, the page cache, slab pages), and failed a make check
 once with both halves of 85 shrinking it (-26 and -15 KiB/cycle).  A leak
-grows it in every quarter, a one-off in one or two, so the check fails
-when three quarters of four grow it past the bound: a driver that leaked
-an order-2 page (16 KiB) per display bind failed it on 5.10 and 6.1 (84's
-24 cycles: 4-7 cycles per quarter), where the clean runs passed.  The
+grows it in the sum and in more than one quarter, a one-off in the sum
+only through one quarter, so the check fails when the last three quarters
+together (the first follows the warm-up) grow it past the bound and at
+least two quarters do.  The quarters alone are too noisy to bound: on 6.12,
+80-ws281x-cycles' quarters swing by up to 60 KiB per cycle either way
+without a leak (the per-CPU page lists move by hundreds of KiB between
+snapshots; a make check once saw +31, +28, -33, +12 KiB per cycle, +4 over
+the last three), and a driver that leaked an order-2 page (16 KiB) per
+display bind moved 84's quarters on 6.1 by +2, +16, -5, +35 KiB per cycle,
++16.7 over the last three (two earlier runs of that leak, on 5.10 and 6.1,
+grew three quarters of four).  The
 counters, caches and call sites that moved most are reported, not bounded.
 
 The guest boots with slub_debug=U on the counted caches (scripts/vm.sh),
@@ -279,7 +286,8 @@ class LeakMeter:
         check("live kmalloc+kernfs objects (the kernel's own left out) grow less than "
               "%d B per cycle over the second half (%+.0f)"
               % (slab_per_cycle, slab), slab < slab_per_cycle)
-        check("memory no meminfo counter accounts for grows by %d B per cycle or more "
-              "in fewer than three quarters (%s)"
-              % (unaccounted_per_cycle, ", ".join("%+.0f" % x for x in growth)),
-              sorted(growth)[1] < unaccounted_per_cycle)
+        late = (end[1] - snap[1][1]) / (p[4] - p[1])
+        check("memory no meminfo counter accounts for grows less than %d B per cycle over "
+              "the last three quarters together (%+.0f), or in fewer than two quarters (%s)"
+              % (unaccounted_per_cycle, late, ", ".join("%+.0f" % x for x in growth)),
+              late < unaccounted_per_cycle or sorted(growth)[2] < unaccounted_per_cycle)
