@@ -64,8 +64,8 @@ version:
 
 # pru-gcc from PATH, or bootstrapped into the cache on first use.
 firmware:
-	$(MAKE) -C firmware O=$(BUILD)/firmware \
-		CROSS_COMPILE=$$($(SCRIPTS)/pru-toolchain.sh)/pru-
+	bin=$$($(SCRIPTS)/pru-toolchain.sh) && \
+		$(MAKE) -C firmware O=$(BUILD)/firmware CROSS_COMPILE=$$bin/pru-
 
 # The firmware users run; test firmware (fw-test := y) stays out.
 firmware_install: firmware

@@ -25,13 +25,15 @@ firmware_check() {
 	CROSS_COMPILE=$bin/pru- O="$PRUKIT_TOP/out/firmware" firmware/check.sh
 }
 
-# The harness checks itself: step() (selftest.sh), and that a driver's
+# The harness checks itself: step() (selftest.sh), that a driver's
 # folder is found by the builds, make install and the harnesses
-# (discovery.sh).
+# (discovery.sh), and that a board without pru-gcc is not sent into a GCC
+# bootstrap (toolchain-guard.sh).
 harness_check() {
 	local rc=0
 	tests/harness/selftest.sh || rc=1
 	tests/harness/discovery.sh || rc=1
+	tests/harness/toolchain-guard.sh || rc=1
 	return $rc
 }
 
@@ -55,7 +57,7 @@ qemu_check() {
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
-step harness 36 harness_check				# [12 + 25]
+step harness 48 harness_check				# [12 + 36 + 4]
 step checkpatch 88 scripts/checkpatch.sh		# [93], one per C file
 step kernels 16 scripts/kernels.sh 5.10 6.1 6.12	# [18]: armmp and board builds
 step qemu 1 qemu_check					# [1]

@@ -14,6 +14,15 @@ if [ -z "${PRUKIT_BOOTSTRAP_PRU_GCC:-}" ] && command -v pru-gcc >/dev/null 2>&1;
 	exit 0
 fi
 
+# Not on a board: building GCC there takes hours (and more memory than a
+# 512 MB board has).  PRUKIT_HOST_MACHINE stands for uname -m (tests).
+case ${PRUKIT_HOST_MACHINE:-$(uname -m)} in
+arm* | aarch64)
+	[ -n "${PRUKIT_BOOTSTRAP_PRU_GCC:-}" ] ||
+		die "no pru-gcc on this ARM machine, and building one here takes hours: install BeagleBoard's gcc-pru (sudo apt install gcc-pru, from BeagleBoard's package repository, which their images use), or install the prebuilt firmware (the prukit-firmware package, built on a PC with make deb); PRUKIT_BOOTSTRAP_PRU_GCC=1 builds it here anyway"
+	;;
+esac
+
 need_pkgs binutils-source gcc-12-source newlib-source build-essential \
 	libgmp-dev libmpfr-dev libmpc-dev flex bison texinfo xz-utils patch
 
