@@ -254,6 +254,17 @@ static void prukit_pru_subdev_stop(struct rproc_subdev *subdev, bool crashed)
 			dev_name(&pru->rproc->dev));
 }
 
+/* Let go of the core that prukit_pru_find() returned (and a claim on it) */
+static void prukit_pru_put(struct prukit_pru *pru)
+{
+	if (pru->via_pru_rproc) {
+		prukit_pru_rproc_put(pru->rproc);
+	} else {
+		prukit_pru_unclaim(pru->rproc);
+		rproc_put(pru->rproc);
+	}
+}
+
 static void prukit_pru_release(void *data)
 {
 	struct prukit_pru *pru = data;
@@ -264,12 +275,7 @@ static void prukit_pru_release(void *data)
 	rproc_remove_subdev(rproc, &pru->subdev);
 	mutex_unlock(&rproc->lock);
 	prukit_pru_sysfs_lock(pru, false);
-	if (pru->via_pru_rproc) {
-		prukit_pru_rproc_put(pru->rproc);
-	} else {
-		prukit_pru_unclaim(pru->rproc);
-		rproc_put(pru->rproc);
-	}
+	prukit_pru_put(pru);
 }
 
 /**
@@ -336,12 +342,7 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 	if (state != RPROC_OFFLINE) {
 		dev_err(dev, "PRU %s is not offline (it runs %s): stop it (echo stop > /sys/class/remoteproc/%s/state), then bind the driver\n",
 			dev_name(&rproc->dev), rproc->firmware, dev_name(&rproc->dev));
-		if (pru->via_pru_rproc) {
-			prukit_pru_rproc_put(rproc);
-		} else {
-			prukit_pru_unclaim(rproc);
-			rproc_put(rproc);
-		}
+		prukit_pru_put(pru);
 		return ERR_PTR(-EBUSY);
 	}
 	prukit_pru_sysfs_lock(pru, true);
