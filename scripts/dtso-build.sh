@@ -5,7 +5,7 @@
 #
 # The one way prukit compiles a device-tree overlay source: the C
 # preprocessor as Kbuild runs it for .dts files (cpp -nostdinc -undef
-# -D__DTS__ -x assembler-with-cpp) with the kernel's dt-bindings headers
+# -D__DTS__ -x assembler-with-cpp) with dt-bindings headers
 # (#include <dt-bindings/pinctrl/am33xx.h> ...) and the directory of SRC on
 # the include path, then dtc -@ (symbols, so that the result can be applied
 # and can itself be referred to).  Any message of cpp or dtc - a warning
@@ -13,11 +13,16 @@
 # blob survives a failed build.  OUT is written (through a temporary file)
 # only when everything succeeded.
 #
-# The headers come from Debian's linux-source-S (default 6.12; the dt-bindings
-# macros prukit uses are identical in 6.1), fetched and extracted once into
-# $PRUKIT_CACHE by scripts/linux-source.sh; --kdir DIR (or PRUKIT_DT_KDIR)
-# names an extracted tree instead and skips that look-up.  Needs only cpp and
-# device-tree-compiler, which it installs if they are missing.
+# The headers are prukit's own by default: overlays/include/dt-bindings/
+# (gpio, leds) and <dt-bindings/pinctrl/am33xx.h> generated from the pin
+# table by scripts/pins-header.sh --dt, so that building an overlay needs
+# no kernel source and no network (a board, a fresh machine).  An overlay
+# that uses a macro they lack fails in dtc (a syntax error on the line that
+# uses it); build it with a kernel's headers instead: --series S takes them from Debian's
+# linux-source-S (5.10, 6.1, 6.12; fetched and extracted once into
+# $PRUKIT_CACHE by scripts/linux-source.sh), --kdir DIR (or PRUKIT_DT_KDIR)
+# from an extracted kernel tree.  Needs only cpp and device-tree-compiler,
+# which it installs if they are missing.
 #
 # Used by scripts/overlays.sh (make overlays, make check) and scripts/vm.sh
 # (make vmrun OVERLAY=my.dtso).  Exit status: 0 built, 1 the overlay does not
@@ -26,12 +31,12 @@ set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
 usage() {
-	echo "usage: ${0##*/} [--series 6.1|6.12 | --kdir DIR] SRC.dtso OUT.dtbo" >&2
+	echo "usage: ${0##*/} [--series 5.10|6.1|6.12 | --kdir DIR] SRC.dtso OUT.dtbo" >&2
 	exit 2
 }
 err() { printf 'dtso-build: %s\n' "$*" >&2; }
 
-series=6.12
+series=
 kdir=${PRUKIT_DT_KDIR:-}
 while [ $# -gt 0 ]; do
 	case $1 in
@@ -70,22 +75,32 @@ for t in cpp dtc; do
 	command -v "$t" >/dev/null || { err "$t not found"; exit 2; }
 done
 
-if [ -z "$kdir" ]; then
-	kdir=$("$PRUKIT_TOP/scripts/linux-source.sh" "$series" dt) ||
-		{ err "could not get the linux-source-$series dt-bindings headers"; exit 2; }
-fi
-if [ ! -d "$kdir/include/dt-bindings" ]; then
-	err "$kdir/include/dt-bindings: no such directory (not a kernel source tree?)"
-	exit 2
-fi
-
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/dtso-build.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 
+if [ -n "$series" ]; then
+	kdir=$("$PRUKIT_TOP/scripts/linux-source.sh" "$series" dt) ||
+		{ err "could not get the linux-source-$series dt-bindings headers"; exit 2; }
+fi
+if [ -n "$kdir" ]; then
+	if [ ! -d "$kdir/include/dt-bindings" ]; then
+		err "$kdir/include/dt-bindings: no such directory (not a kernel source tree?)"
+		exit 2
+	fi
+	incs=("-I" "$kdir/include")
+	hdrs=${kdir%/}/include
+else
+	mkdir -p "$tmp/include/dt-bindings/pinctrl"
+	"$PRUKIT_TOP/scripts/pins-header.sh" --dt >"$tmp/include/dt-bindings/pinctrl/am33xx.h" ||
+		{ err "could not generate <dt-bindings/pinctrl/am33xx.h> from the pin table"; exit 2; }
+	incs=("-I" "$tmp/include" "-I" "$PRUKIT_TOP/overlays/include")
+	hdrs="prukit's (overlays/include, and am33xx.h from sim/am335x-pins.tsv; --series S for a kernel's)"
+fi
+
 # Relative paths in messages stay as the caller gave them.
-if ! cpp -nostdinc -undef -D__DTS__ -x assembler-with-cpp -I "$kdir/include" \
+if ! cpp -nostdinc -undef -D__DTS__ -x assembler-with-cpp "${incs[@]}" \
 	-I "$(dirname "$src")" -o "$tmp/pre.dts" "$src" 2>"$tmp/cpp.log" || [ -s "$tmp/cpp.log" ]; then
-	err "$src: the C preprocessor failed (headers: ${kdir%/}/include):"
+	err "$src: the C preprocessor failed (headers: $hdrs):"
 	sed 's/^/    /' "$tmp/cpp.log" >&2
 	rm -f "$out"
 	exit 1

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# On an ARM machine (a board) without pru-gcc, scripts/pru-toolchain.sh and
-# make firmware stop at once with what to install instead of building GCC
-# for hours; a pru-gcc on PATH (BeagleBoard's gcc-pru) is used as it is.
-# The machine is faked with PRUKIT_HOST_MACHINE (uname -m's stand-in), and
-# PATH holds no pru-gcc unless the check puts a stub there.
+# What a board's build does without the development machine's caches:
+# - on an ARM machine without pru-gcc, scripts/pru-toolchain.sh and make
+#   firmware stop at once with what to install instead of building GCC for
+#   hours; a pru-gcc on PATH (BeagleBoard's gcc-pru) is used as it is.  The
+#   machine is faked with PRUKIT_HOST_MACHINE (uname -m's stand-in), and
+#   PATH holds no pru-gcc unless the check puts a stub there;
+# - make overlays with an empty cache builds every overlay from what the
+#   checkout holds (prukit's dt-bindings headers): no linux-source fetched.
 set -uo pipefail
 cd "$(dirname "$0")/../.." || exit 1
 top=$PWD
@@ -46,5 +49,28 @@ if out=$(PRUKIT_HOST_MACHINE=armv7l PATH=$tmp/bin:/usr/sbin:/usr/bin:/sbin:/bin 
 	pass "armv7l with a pru-gcc on PATH (gcc-pru): pru-toolchain.sh uses it"
 else
 	fail "armv7l with a pru-gcc on PATH (gcc-pru): pru-toolchain.sh uses it (printed '${out:-}')"
+fi
+n=$(find overlays -maxdepth 1 -name '*.dtso' | wc -l)
+mkdir -p "$tmp/cache"
+if PRUKIT_CACHE=$tmp/cache timeout 120 make -s -C "$top" overlays >"$tmp/out" 2>&1 &&
+	[ "$(find out/overlays -maxdepth 1 -name '*.dtbo' | wc -l)" -eq "$n" ] &&
+	[ -z "$(ls -A "$tmp/cache")" ]; then
+	pass "make overlays with an empty cache: all $n overlays built, nothing fetched or cached"
+else
+	sed -n 1,20p "$tmp/out"
+	ls -A "$tmp/cache"
+	fail "make overlays with an empty cache: all $n overlays built, nothing fetched or cached"
+fi
+
+printf '/dts-v1/;\n/plugin/;\n#include <dt-bindings/pinctrl/am33xx.h>\n/ { x = <AM335X_PIN_NO_SUCH_PAD>; };\n' \
+	>"$tmp/bad.dtso"
+if PRUKIT_CACHE=$tmp/cache scripts/dtso-build.sh "$tmp/bad.dtso" "$tmp/bad.dtbo" \
+	>"$tmp/out" 2>&1; then
+	fail "an overlay using a pad macro prukit's headers lack does not build"
+elif [ ! -e "$tmp/bad.dtbo" ] && grep -q "bad.dtso:4" "$tmp/out"; then
+	pass "an overlay using a pad macro prukit's headers lack fails, naming its line"
+else
+	cat "$tmp/out"
+	fail "an overlay using a pad macro prukit's headers lack fails, naming its line"
 fi
 exit $failed
