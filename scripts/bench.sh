@@ -32,31 +32,55 @@
 #     drivers/hub75/hub75_conv.c; drivers/hub75/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
+#
+# Usage: bench.sh [PART...] (make bench [PARTS="..."]): the parts named, in
+# the order above, or all of them: prusim rpmsg-fw ws281x beaglelogic hub75
+# vm stress.  Whatever the parts, the host tools and the firmware are built
+# first (a fresh clone needs nothing else).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
+ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 vm stress"
+for p in "$@"; do
+	[[ " $ALL_PARTS " == *" $p "* ]] || die "bench: no part '$p' (parts: $ALL_PARTS)"
+done
+want() { [ "$PARTS_GIVEN" = 0 ] || [[ $PARTS == *" $1 "* ]]; }
+PARTS=" $* "
+PARTS_GIVEN=$#
+
 make -s -C "$PRUKIT_TOP" tools firmware >/dev/null
-"$PRUKIT_TOP/tests/prusim/bench.sh"
-"$PRUKIT_TOP/tests/rpmsg-fw/run.sh" >"$PRUKIT_TOP/out/rpmsg-fw-bench.log" 2>&1 ||
-	die "tests/rpmsg-fw failed; see out/rpmsg-fw-bench.log"
-sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exact)/p' \
-	"$PRUKIT_TOP/out/rpmsg-fw-bench.log" | sed 's/; /\n       /g'
-"$PRUKIT_TOP/drivers/ws281x/tests/bench.sh" >"$PRUKIT_TOP/out/ws281x-bench.log" 2>&1 ||
-	die "drivers/ws281x/tests/bench.sh failed; see out/ws281x-bench.log"
-grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
-"$PRUKIT_TOP/drivers/beaglelogic/tests/bench.sh" >"$PRUKIT_TOP/out/beaglelogic-bench.log" 2>&1 ||
-	{ grep -E '^(FAIL|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log" || true
-	  die "drivers/beaglelogic/tests/bench.sh failed; see out/beaglelogic-bench.log"; }
-grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
-"$PRUKIT_TOP/drivers/hub75/tests/bench.sh" >"$PRUKIT_TOP/out/hub75-bench.log" 2>&1 ||
-	{ grep -E '^FAIL:' "$PRUKIT_TOP/out/hub75-bench.log" || true
-	  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
-grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
 out=$PRUKIT_TOP/out/bench
 mkdir -p "$out"
-# The simulator's speed, side by side: the same firmware (blinky on both
-# cores) in the host tool, then in the VM.
-host_mcps=$(python3 - "$PRUKIT_TOP/out/tools/prusim" "$PRUKIT_TOP/out/firmware" <<'PY'
+if want prusim; then
+	"$PRUKIT_TOP/tests/prusim/bench.sh"
+fi
+if want rpmsg-fw; then
+	"$PRUKIT_TOP/tests/rpmsg-fw/run.sh" >"$PRUKIT_TOP/out/rpmsg-fw-bench.log" 2>&1 ||
+		die "tests/rpmsg-fw failed; see out/rpmsg-fw-bench.log"
+	sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exact)/p' \
+		"$PRUKIT_TOP/out/rpmsg-fw-bench.log" | sed 's/; /\n       /g'
+fi
+if want ws281x; then
+	"$PRUKIT_TOP/drivers/ws281x/tests/bench.sh" >"$PRUKIT_TOP/out/ws281x-bench.log" 2>&1 ||
+		die "drivers/ws281x/tests/bench.sh failed; see out/ws281x-bench.log"
+	grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
+fi
+if want beaglelogic; then
+	"$PRUKIT_TOP/drivers/beaglelogic/tests/bench.sh" >"$PRUKIT_TOP/out/beaglelogic-bench.log" 2>&1 ||
+		{ grep -E '^(FAIL|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log" || true
+		  die "drivers/beaglelogic/tests/bench.sh failed; see out/beaglelogic-bench.log"; }
+	grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
+fi
+if want hub75; then
+	"$PRUKIT_TOP/drivers/hub75/tests/bench.sh" >"$PRUKIT_TOP/out/hub75-bench.log" 2>&1 ||
+		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/hub75-bench.log" || true
+		  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
+	grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
+fi
+if want vm; then
+	# The simulator's speed, side by side: the same firmware (blinky on both
+	# cores) in the host tool, then in the VM.
+	host_mcps=$(python3 - "$PRUKIT_TOP/out/tools/prusim" "$PRUKIT_TOP/out/firmware" <<'PY'
 import json, resource, subprocess, sys
 prusim, fw = sys.argv[1:]
 cmd = [prusim, "--pru0", fw + "/blinky-pru0.elf", "--pru1", fw + "/blinky-pru1.elf",
@@ -65,12 +89,12 @@ res = json.loads(subprocess.run(cmd, check=True, capture_output=True, text=True)
 ru = resource.getrusage(resource.RUSAGE_CHILDREN)
 print("%.2f" % (res["cycles"] / (ru.ru_utime + ru.ru_stime) / 1e6))
 PY
-)
-echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
-	>"$out/guest.log" 2>&1 || { tail -n 20 "$out/guest.log"; die "the bench guest failed"; }
-grep -E '^(BENCH|INFO):' "$out/guest.log" || true
-python3 - "$host_mcps" "$out/guest.log" <<'PY'
+	)
+	echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
+	"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
+		>"$out/guest.log" 2>&1 || { tail -n 20 "$out/guest.log"; die "the bench guest failed"; }
+	grep -E '^(BENCH|INFO):' "$out/guest.log" || true
+	python3 - "$host_mcps" "$out/guest.log" <<'PY'
 import re, sys
 host = float(sys.argv[1])
 def mcps(log):
@@ -85,6 +109,7 @@ if board:
           "time: the QEMU PRU-ICSS %.1f M = %.0f%% of the host tool's %.1f M"
           % (board, 100 * board / host, host))
 PY
+fi
 # The long stop/start stress (900 cycles under rpmsg I/O, page_poison=1),
 # on the kernel's pru_rproc with prukit_pru's kick (Documentation/rpmsg-kick.rst):
 # not a speed figure, but too long for make check.  Its checks count: a
@@ -92,7 +117,7 @@ PY
 # About 0.4 s per cycle under TCG (900 cycles took 384 s on 6.12, 376 s on
 # 6.1); the boot gets 80 minutes all the same: the host may be shared (up to
 # 3x slower, measured), and a regression should fail here, not time out.
-mkdir -p "$out"
+want stress || exit 0
 rc=0
 for k in ${BENCH_STRESS_KVERS:-6.1 6.12}; do
 	VM_TIMEOUT=${VM_TIMEOUT:-4800} \

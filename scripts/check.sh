@@ -79,6 +79,9 @@ while read -r name min path <&3; do
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
 step vmtest 2640 scripts/vm.sh test "5.10 6.1 6.12"	# [2770], 3 kernels, one boot each (and a second for 71)
+# The harness again: make vmrun, vmtest and bench from a copy with no out/
+# (after the VM tests, so that a cold run has its QEMU and kernels cached).
+step fresh-clone 5 tests/harness/fresh-clone.sh		# [5]
 
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"
 echo "$passed passed, $failed failed"

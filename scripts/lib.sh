@@ -4,6 +4,12 @@
 PRUKIT_TOP=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 PRUKIT_CACHE=${PRUKIT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/prukit}
 export PRUKIT_TOP PRUKIT_CACHE
+# The scripts are make's entry points (make vmrun KVER=6.1 SCRIPT=x OUT=dir):
+# the variables given on make's command line travel in MAKEFLAGS and would
+# override those of every make a script runs (firmware/Makefile's and
+# tools/prusim/Makefile's OUT: the firmware built into the vmrun output).
+# A script's makes get only what it passes them.
+unset MAKEFLAGS MAKEOVERRIDES MFLAGS
 
 msg() { printf '[prukit] %s\n' "$*" >&2; }
 die() { printf '[prukit] error: %s\n' "$*" >&2; exit 1; }
