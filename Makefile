@@ -37,12 +37,15 @@ DEPMOD_DIR ?= /lib/depmod.d
 INCLUDE_DIR ?= /usr/include
 SBIN_DIR ?= /usr/sbin
 SYSTEMD_UNIT_DIR ?= /lib/systemd/system
+BIN_DIR ?= /usr/bin
+TOOL_LIB_DIR ?= /usr/lib/prukit
+DATA_DIR ?= /usr/share/prukit
 
 BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install kernels tools kunit vmtest vmrun checkpatch demo bench check version deb
+	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install tool_install kernels tools kunit vmtest vmrun checkpatch demo bench check version deb
 
 all: modules
 
@@ -140,8 +143,19 @@ server_install:
 			>$(DESTDIR)$(SYSTEMD_UNIT_DIR)/$${s##*/}.service || exit 1; \
 	done
 
+# The prukit command (tools/prukit): /usr/bin/prukit, its Python package in
+# /usr/lib/prukit, and the pin table it reads in /usr/share/prukit.
+tool_install:
+	install -d $(DESTDIR)$(BIN_DIR) $(DESTDIR)$(TOOL_LIB_DIR)/prukit_tool $(DESTDIR)$(DATA_DIR)
+	install -m 0755 tools/prukit/prukit $(DESTDIR)$(BIN_DIR)/prukit
+	@for f in tools/prukit/prukit_tool/*.py; do \
+		sed 's|@VERSION@|$(PRUKIT_VERSION)|' $$f >$(DESTDIR)$(TOOL_LIB_DIR)/prukit_tool/$${f##*/} && \
+		chmod 0644 $(DESTDIR)$(TOOL_LIB_DIR)/prukit_tool/$${f##*/} || exit 1; \
+	done
+	install -m 0644 sim/am335x-pins.tsv $(DESTDIR)$(DATA_DIR)/
+
 install: modules_install firmware_install overlays_install udev_install headers_install \
-	server_install modprobe_install depmod_install
+	server_install tool_install modprobe_install depmod_install
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh

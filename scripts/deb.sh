@@ -32,7 +32,7 @@ make -s -C "$PRUKIT_TOP" firmware >/dev/null || die "make firmware failed"
 make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
 dkms_source "$work/src"
 make -s -C "$PRUKIT_TOP" firmware_install overlays_install udev_install modprobe_install \
-	depmod_install headers_install server_install DESTDIR="$work/root" \
+	depmod_install headers_install server_install tool_install DESTDIR="$work/root" \
 	UDEV_RULES_DIR=/lib/udev/rules.d >"$out/install.log" 2>&1 ||
 	{ cat "$out/install.log" >&2; die "make install into the staging tree failed"; }
 # The firmware stripped of symbols and debug information (remoteproc loads

@@ -211,8 +211,9 @@ make_initrd() {
 	# The udev rules and the servers, as make install puts them (udev runs
 	# only when a test starts it: drivers/ws281x/tests/vm/cases/80-ws281x-cycles;
 	# the servers too: drivers/beaglelogic/tests/vm/cases/82-beaglelogic)
-	make -s -C "$PRUKIT_TOP" udev_install server_install modprobe_install DESTDIR="$stage" >/dev/null ||
-		die "make udev_install server_install modprobe_install failed"
+	make -s -C "$PRUKIT_TOP" udev_install server_install tool_install modprobe_install \
+		DESTDIR="$stage" >/dev/null ||
+		die "make udev_install server_install tool_install modprobe_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
 	{

@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: GPL-2.0-only
+"""The prukit command's package: one module per group of subcommands.
+
+Each command module has register(subparsers), which adds its subcommands
+with set_defaults(func=...); a func takes the parsed arguments and returns
+the exit status.  A user's mistake or a missing piece of the system raises
+Error with what to do about it; cli.main() prints it and exits 1.
+"""
+import os
+
+
+class Error(Exception):
+    """A failure the user can act on: the message, then what to do."""
+
+    def __init__(self, msg, hint=None):
+        super().__init__(msg)
+        self.hint = hint
+
+
+def _top():
+    """The checkout this package runs from, or None when installed."""
+    top = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+    return top if os.path.isfile(os.path.join(top, "sim", "am335x-pins.tsv")) else None
+
+
+def data_file(name):
+    """A file of /usr/share/prukit (PRUKIT_DATA_DIR), or of the checkout."""
+    d = os.environ.get("PRUKIT_DATA_DIR")
+    if d:
+        return os.path.join(d, name)
+    top = _top()
+    if top and name == "am335x-pins.tsv":
+        return os.path.join(top, "sim", name)
+    return os.path.join("/usr/share/prukit", name)
+
+
+def sysfs(*parts):
+    """A path under /sys, or under PRUKIT_SYSFS (the tests' fake trees)."""
+    return os.path.join(os.environ.get("PRUKIT_SYSFS", "/sys"), *parts)
+
+
+def firmware_dir():
+    """Where the overlays (.dtbo) and prukit/*.elf live."""
+    return os.environ.get("PRUKIT_FIRMWARE_DIR", "/lib/firmware")
+
+
+def read(path, default=None):
+    """A sysfs attribute's text, stripped; default when it cannot be read."""
+    try:
+        with open(path) as f:
+            return f.read().strip()
+    except OSError:
+        return default
