@@ -64,7 +64,8 @@ step qemu 1 qemu_check					# [1]
 step firmware 90 firmware_check				# [96], grows with the images
 step overlays 770 scripts/overlays.sh --check		# [791]
 step dkms 7 scripts/dkms-test.sh			# [8]
-step deb 45 scripts/deb.sh --check			# [48]: 4 packages, lintian
+step deb 50 scripts/deb.sh --check			# [53]: 4 packages, lintian
+step tool 22 tests/tool/test-prukit.py			# [24]: the prukit command on the host
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
 # Each driver's own checks, drivers/<driver>/tests/check.sh, with the

@@ -43,6 +43,7 @@ for f in "$work"/root/lib/firmware/prukit/*.elf; do
 done
 install -D -m 0644 "$PRUKIT_TOP/drivers/beaglelogic/server/beaglelogic-tcpd.8" \
 	"$work/root/man/beaglelogic-tcpd.8"
+install -D -m 0644 "$PRUKIT_TOP/tools/prukit/prukit.1" "$work/root/man/prukit.1"
 
 cp -a "$PRUKIT_TOP/packaging/debian" "$work/debian"
 maint=$(git -C "$PRUKIT_TOP" log -1 --format='%an <%ae>')
@@ -134,6 +135,15 @@ has prukit-tools "^/usr/sbin/beaglelogic-tcpd$" "/usr/sbin/beaglelogic-tcpd"
 has prukit-tools "^/lib/systemd/system/beaglelogic-tcpd.service$" "its systemd unit"
 has prukit-tools "^/usr/share/man/man8/beaglelogic-tcpd.8.gz$" "its man page"
 has prukit-tools "^/usr/include/prukit/ws281x.h$" "the ioctl headers"
+has prukit-tools "^/usr/bin/prukit$" "/usr/bin/prukit"
+has prukit-tools "^/usr/lib/prukit/prukit_tool/status.py$" "the prukit command's package in /usr/lib/prukit"
+has prukit-tools "^/usr/share/prukit/am335x-pins.tsv$" "its pin table"
+has prukit-tools "^/usr/share/man/man1/prukit.1.gz$" "its man page"
+if dpkg-deb -I "$out/prukit-overlays_${ver}_all.deb" postrm | grep -q "sed -i -e '/^#prukit: /"; then
+	pass "prukit-overlays: postrm takes prukit's lines out of uEnv.txt (tests/tool tests it)"
+else
+	fail "prukit-overlays: postrm takes prukit's lines out of uEnv.txt"
+fi
 # shellcheck disable=SC2016 # the postinst's own "$g", literally
 if dpkg-deb -I "$out/prukit-tools_${ver}_all.deb" postinst | grep -q 'addgroup --quiet --system "\$g"' &&
    ! dpkg-deb -I "$out/prukit-tools_${ver}_all.deb" postinst | grep -q 'systemctl.*enable'; then

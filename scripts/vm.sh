@@ -192,6 +192,10 @@ make_initrd() {
 	fi
 
 	cp "$PRUKIT_TOP"/out/firmware/*.elf "$stage/lib/firmware/prukit/"
+	# the shipped overlays' blobs, where make install and prukit-overlays put them
+	# (the board's tree is merged here, make_dtb; the prukit command reads them)
+	make -s -C "$PRUKIT_TOP" overlays_install DESTDIR="$stage" >/dev/null ||
+		die "make overlays_install failed"
 	install -m 0755 "$VMDIR/init" "$stage/init"
 	install -m 0755 "$VMDIR/run-tests" "$stage/prukit/run-tests"
 	# Every case, tests/vm/cases and the drivers' own, side by side.

@@ -39,6 +39,11 @@ def sysfs(*parts):
     return os.path.join(os.environ.get("PRUKIT_SYSFS", "/sys"), *parts)
 
 
+def dt(*parts):
+    """A path under /proc/device-tree, or under PRUKIT_DT (the tests')."""
+    return os.path.join(os.environ.get("PRUKIT_DT", "/proc/device-tree"), *parts)
+
+
 def firmware_dir():
     """Where the overlays (.dtbo) and prukit/*.elf live."""
     return os.environ.get("PRUKIT_FIRMWARE_DIR", "/lib/firmware")
