@@ -16,6 +16,8 @@
 #   make kunit            KUnit suites on UML with KASAN and lockdep
 #   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]:
 #                         the kernel's own PRU drivers on the QEMU PRU-ICSS
+#   make vmdeb            [KVER=6.1]: make deb's packages on a Debian root in the VM,
+#                         installed with apt (DKMS in the guest), used, removed, purged
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
 #   make demo             the emulated BeagleBone runs prukit's drivers and the Cookbook's
 #                         NeoPixel example, and shows what the pins did
@@ -45,7 +47,7 @@ BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
 
 .PHONY: all modules modules_install clean install firmware firmware_install FORCE \
-	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install tool_install kernels tools kunit vmtest vmrun checkpatch demo bench check version deb
+	overlays overlays_install udev_install modprobe_install depmod_install headers_install server_install tool_install kernels tools kunit vmtest vmdeb vmrun checkpatch demo bench check version deb
 
 all: modules
 
@@ -170,6 +172,10 @@ kunit:
 KVERS ?= 5.10 6.1 6.12
 vmtest:
 	$(SCRIPTS)/vm.sh test "$(KVERS)" "$(TESTS)"
+
+# The Debian packages in the VM: installed, used, removed, purged (6.1)
+vmdeb:
+	$(SCRIPTS)/vm.sh deb $(or $(KVER),6.1)
 
 vmrun:
 	@test -n "$(KVER)" -a -n "$(SCRIPT)" || \

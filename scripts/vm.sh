@@ -32,6 +32,11 @@
 #	failed" per kernel and overall.  A test that leaves files for a
 #	second boot (second_boot below) gets one, right after the first.
 #	VM_JOBS kernels boot at once (default: one per host CPU).
+#   vm.sh deb [KVER]                   (make vmdeb, default 6.1)
+#	The Debian packages of make deb on a Debian root dpkg knows, booted
+#	from a disk: installed with apt, DKMS building the modules in the
+#	guest, the drivers run from the installed files, then removal and
+#	purge (deb_test below; tests/vm/deb/guest).
 #
 # Either fails on any oops, BUG, WARN, lockdep report, hung task or
 # poisoned page found written in the kernel log, on a register access the
@@ -43,6 +48,7 @@ set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
 need_pkgs device-tree-compiler cpio kmod tar sigrok-cli
+. "$(dirname "$0")/papt.sh"
 
 # One boot runs every VM test of a kernel: about 8 minutes on an idle
 # 2-core machine, but over 15 when the host's CPUs are shared (measured with
@@ -129,8 +135,8 @@ make_dtb() {
 		overlays+=("$dir/$name.dtbo")
 	done
 	local src boards
-	for o in "$PRUKIT_TOP"/out/overlays/*.dtbo; do
-		[ -e "$o" ] || die "no shipped overlays in out/overlays (make overlays)"
+	for o in "${VM_OVERLAY_DIR:-$PRUKIT_TOP/out/overlays}"/*.dtbo; do
+		[ -e "$o" ] || die "no shipped overlays in ${VM_OVERLAY_DIR:-out/overlays} (make overlays)"
 		# the simulated board is a Black: not the overlays made for
 		# other boards only ("prukit-boards:" without am335x-boneblack)
 		src=$PRUKIT_TOP/overlays/$(basename "$o" .dtbo).dtso
@@ -158,6 +164,10 @@ make_dtb() {
 make_initrd() {
 	local dir=$1 mode=$2 arg=$3 stage=$1/stage rootfs m f d
 	rootfs=$("$PRUKIT_TOP/scripts/vm-rootfs.sh")
+	# deb and stage2 (deb_test, deb_root): the initramfs only finds the
+	# Debian root on its disk; nothing of prukit's is in it
+	local bare=0
+	case $mode in deb | stage2) bare=1 ;; esac
 	rm -rf "$stage"
 	mkdir -p "$stage"/{prukit/tests,lib/firmware/prukit,lib/modules/"$kver"}
 
@@ -174,16 +184,22 @@ make_initrd() {
 	mkdir -p "$mods/updates"
 	for d in "$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit" \
 		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
+		# bare: the kernel's PRU drivers (and rpmsg), as a board's
+		# kernel package has them, not prukit's modules
+		[ $bare = 1 ] && [ "$d" = "$PRUKIT_TOP/out/kernels/$kver-board" ] && continue
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
 	done
-	# A stand-in for TI's own rpmsg_pru where TI's kernels have it, beside
-	# prukit's in updates/ (tests/vm/cases/71-rpmsg-ti-module)
-	mkdir -p "$mods/kernel/drivers/rpmsg"
-	cp "$PRUKIT_TOP/out/kernels/$kver-board-ti/rpmsg_pru.ko" "$mods/kernel/drivers/rpmsg/" ||
-		die "no stand-in for TI's rpmsg_pru (scripts/kernels.sh --board)"
+	if [ $bare = 0 ]; then
+		# A stand-in for TI's own rpmsg_pru where TI's kernels have it,
+		# beside prukit's in updates/ (tests/vm/cases/71-rpmsg-ti-module)
+		mkdir -p "$mods/kernel/drivers/rpmsg"
+		cp "$PRUKIT_TOP/out/kernels/$kver-board-ti/rpmsg_pru.ko" "$mods/kernel/drivers/rpmsg/" ||
+			die "no stand-in for TI's rpmsg_pru (scripts/kernels.sh --board)"
+	fi
 	# as "make install" leaves a board: depmod with prukit's depmod.d
-	make -s -C "$PRUKIT_TOP" depmod_install DESTDIR="$stage" >/dev/null ||
+	[ $bare = 1 ] || make -s -C "$PRUKIT_TOP" depmod_install DESTDIR="$stage" >/dev/null ||
 		die "make depmod_install failed"
+	mkdir -p "$stage/lib/depmod.d"
 	depmod -b "$stage" -C "$stage/lib/depmod.d" -e -E "$kdir/Module.symvers" "$kver" \
 		2>"$dir/depmod.log"
 	if grep -q 'needs unknown symbol' "$dir/depmod.log"; then
@@ -191,12 +207,23 @@ make_initrd() {
 		die "modules for $kver have unresolved symbols"
 	fi
 
+	install -m 0755 "$VMDIR/init" "$stage/init"
+	if [ $bare = 1 ]; then
+		{
+			echo "PRUKIT_MODE=$mode"
+			echo "PRUKIT_MODULES='${PRUKIT_DEB_MODULES:-pruss irq_pruss_intc pru_rproc}'"
+			echo "PRUKIT_KVER='$kver'"
+		} >"$stage/prukit/config"
+		[ "$mode" = deb ] && install -m 0755 "$arg" "$stage/prukit/script"
+		(cd "$stage" && find . -print0 | cpio --null -o -H newc --quiet) >"$dir/prukit.cpio"
+		cat_initrd "$rootfs" "$dir"
+		return 0
+	fi
 	cp "$PRUKIT_TOP"/out/firmware/*.elf "$stage/lib/firmware/prukit/"
 	# the shipped overlays' blobs, where make install and prukit-overlays put them
 	# (the board's tree is merged here, make_dtb; the prukit command reads them)
 	make -s -C "$PRUKIT_TOP" overlays_install DESTDIR="$stage" >/dev/null ||
 		die "make overlays_install failed"
-	install -m 0755 "$VMDIR/init" "$stage/init"
 	install -m 0755 "$VMDIR/run-tests" "$stage/prukit/run-tests"
 	# Every case, tests/vm/cases and the drivers' own, side by side.
 	local all name path
@@ -229,12 +256,17 @@ make_initrd() {
 	[ "$mode" = run ] && install -m 0755 "$arg" "$stage/prukit/script"
 
 	(cd "$stage" && find . -print0 | cpio --null -o -H newc --quiet) >"$dir/prukit.cpio"
-	# The kernel takes an uncompressed cpio after a compressed one only at
-	# a 4-byte aligned offset (init/initramfs.c); zeros in between are
-	# skipped.  Without the padding a rootfs of the wrong length boots
-	# into "Initramfs unpacking failed: invalid magic".
-	local pad=$(( (4 - $(stat -c %s "$rootfs") % 4) % 4 ))
-	{ cat "$rootfs"; head -c "$pad" /dev/zero; cat "$dir/prukit.cpio"; } >"$dir/initrd"
+	cat_initrd "$rootfs" "$dir"
+}
+
+# cat_initrd ROOTFS DIR - DIR/initrd: the userland's cpio, then DIR/prukit.cpio.
+# The kernel takes an uncompressed cpio after a compressed one only at a
+# 4-byte aligned offset (init/initramfs.c); zeros in between are skipped.
+# Without the padding a rootfs of the wrong length boots into "Initramfs
+# unpacking failed: invalid magic".
+cat_initrd() {
+	local pad=$(( (4 - $(stat -c %s "$1") % 4) % 4 ))
+	{ cat "$1"; head -c "$pad" /dev/zero; cat "$2/prukit.cpio"; } >"$2/initrd"
 }
 
 # boot DIR IN OUT - boot the prepared kernel; console to DIR/console.log,
@@ -269,6 +301,8 @@ boot() {
 		-device virtio-blk-device,drive=in,serial=prukit-in \
 		-drive if=none,file="$outdisk",format=raw,id=out \
 		-device virtio-blk-device,drive=out,serial=prukit-out \
+		${VM_ROOTDISK:+-drive if=none,file="$VM_ROOTDISK",format=raw,id=root,snapshot=${VM_ROOTDISK_SNAPSHOT:-on}} \
+		${VM_ROOTDISK:+-device virtio-blk-device,drive=root,serial=prukit-root} \
 		</dev/null 2>&1 | tee "$dir/console.log" | sed -n '/^prukit-vm:/,$p'
 	rc=${PIPESTATUS[0]}
 	[ -z "$errexit" ] || set -e
@@ -353,9 +387,105 @@ second_boot() {
 # remoteproc sysfs files; the tests that use it load it (consumer_load).
 PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port}
 
+# The package test's Debian root (deb_root): bookworm armhf, minbase, with
+# what the packages need on a board and the kernel headers' dependencies.
+DEB_ROOT_PKGS=busybox-static,apt,adduser,kmod,python3,dkms,gcc,make,linux-compiler-gcc-12-arm,libelf1,libssl3
+DEB_ROOT_SIZE=3G
+
+# deb_root - print the path of a raw ext4 image holding a Debian root that
+# dpkg knows: debootstrap's first stage here (it only downloads and
+# unpacks), its second stage - every package's maintainer scripts - in the
+# VM, on the kernel build_prukit set.  Cached in $PRUKIT_CACHE/vm by the
+# package list; boots use it read-only (qemu's snapshot=on).
+deb_root() {
+	local key img tmp dir rc=0
+	key=$(echo "$DEB_ROOT_PKGS $DEB_ROOT_SIZE 1" | sha256sum | cut -c1-12)
+	img=$PRUKIT_CACHE/vm/debroot-$key.img
+	if [ ! -e "$img" ]; then
+		need_pkgs debootstrap e2fsprogs
+		mkdir -p "$PRUKIT_CACHE/vm"
+		tmp=$(mktemp -d "$PRUKIT_CACHE/vm/debroot.XXXXXX")
+		msg "building the package test's Debian root (bookworm armhf minbase: $DEB_ROOT_PKGS): first stage"
+		run_logged "$tmp/first.log" debootstrap --foreign --arch=armhf --variant=minbase \
+			--include="$DEB_ROOT_PKGS" bookworm "$tmp/root" "$(debian_mirror)"
+		truncate -s "$DEB_ROOT_SIZE" "$tmp/root.img"
+		mkfs.ext4 -q -F -L prukit-root -d "$tmp/root" "$tmp/root.img" ||
+			die "mkfs.ext4 -d $tmp/root failed"
+		rm -rf "$tmp/root"
+		dir=$PRUKIT_TOP/out/vm/$kver/stage2
+		rm -rf "$dir"
+		mkdir -p "$dir"
+		make_dtb "$dir/dtb"
+		make_initrd "$dir" stage2 ""
+		msg "second stage in the VM ($kver; several minutes, once)"
+		VM_ROOTDISK=$tmp/root.img VM_ROOTDISK_SNAPSHOT=off boot "$dir" "" "$dir/out" >&2 || rc=$?
+		if [ "$rc" -ne 0 ]; then
+			tail -n 20 "$dir/out/stage2.log" >&2 || true
+			rm -rf "$tmp"
+			die "debootstrap's second stage failed in the VM (exit $rc); see $dir/console.log"
+		fi
+		mv "$tmp/root.img" "$img"
+		rm -rf "$tmp"
+		msg "package test root: $img ($(cat "$dir/seconds") s in the VM)"
+	fi
+	echo "$img"
+}
+
+# kernel_header_debs DIR - the armhf .debs of linux-headers-$kver, its
+# -common package and linux-kbuild, into DIR (cached per kernel).
+kernel_header_debs() {
+	local d=$PRUKIT_CACHE/vm/headers-$kver pkgs deps x
+	if [ ! -e "$d/.complete" ]; then
+		papt_init
+		pkgs=("linux-headers-$kver:armhf")
+		deps=$(pcache show --no-all-versions "linux-headers-$kver:armhf" |
+			sed -n 's/^Depends: //p' | tr ',' '\n' |
+			sed -n 's/^ *\(linux-\(headers\|kbuild\)-[^ ]*\).*/\1/p')
+		for x in $deps; do
+			case $x in linux-kbuild-*) pkgs+=("$x:armhf") ;; *) pkgs+=("$x") ;; esac
+		done
+		rm -rf "$d"
+		mkdir -p "$d"
+		(cd "$d" && run_logged "$d/download.log" papt download "${pkgs[@]}") ||
+			die "downloading ${pkgs[*]} failed"
+		touch "$d/.complete"
+	fi
+	mkdir -p "$1"
+	cp "$d"/*.deb "$1/"
+}
+
+# deb_test SERIES - prukit's Debian packages (make deb) installed, used,
+# removed and purged on a Debian root dpkg knows, booted from its disk
+# (tests/vm/deb/guest says what is checked).  The device tree takes the
+# .dtbo files of the prukit-overlays package, as U-Boot would apply them.
+deb_test() {
+	local series=$1 dir rootimg rc=0
+	build_prukit "$series"
+	dir=$PRUKIT_TOP/out/vm/$kver/deb
+	rm -rf "$dir"
+	mkdir -p "$dir/in/debs" "$dir/ovl"
+	"$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb.log" 2>&1 ||
+		{ tail -n 20 "$dir/deb.log"; die "make deb failed"; }
+	cp "$PRUKIT_TOP"/out/deb/*.deb "$dir/in/debs/"
+	kernel_header_debs "$dir/in/headers"
+	cp "$PRUKIT_TOP/tests/tool/uEnv-beagleboard.txt" "$dir/in/uEnv.txt"
+	dpkg-deb -x "$PRUKIT_TOP"/out/deb/prukit-overlays_*_all.deb "$dir/ovl"
+	VM_OVERLAY_DIR=$dir/ovl/lib/firmware make_dtb "$dir/dtb"
+	rootimg=$(deb_root)
+	make_initrd "$dir" deb "$VMDIR/deb/guest"
+	msg "package test: booting $kver from $rootimg"
+	VM_ROOTDISK=$rootimg boot "$dir" "$dir/in" "$dir/out" || rc=$?
+	kernel_log_clean "$dir" "$dir/out" || rc=1
+	msg "package test: $kver, guest exit status $rc, $(cat "$dir/seconds") s"
+	return "$rc"
+}
+
 cmd=${1:-}
 shift || true
 case $cmd in
+deb)
+	deb_test "${1:-6.1}"
+	;;
 run)
 	series=${1:?usage: vm.sh run KVER SCRIPT [IN] [OUT]}
 	script=${2:?usage: vm.sh run KVER SCRIPT [IN] [OUT]}
@@ -466,6 +596,6 @@ test)
 	[ "$total_f" -eq 0 ]
 	;;
 *)
-	die "usage: vm.sh run KVER SCRIPT [IN] [OUT] | vm.sh test [KVERS] [TESTS]"
+	die "usage: vm.sh run KVER SCRIPT [IN] [OUT] | vm.sh test [KVERS] [TESTS] | vm.sh deb [KVER]"
 	;;
 esac
