@@ -138,7 +138,9 @@ def missing_hint():
 def perm_hint(what):
     return ("The udev rule prukit installs gives %s to group %s:\n"
             "  sudo adduser $USER %s\n"
-            "then log in again (or run prukit with sudo)." % (what, GROUP, GROUP))
+            "then log in again (or run prukit with sudo).  If `ls -l %s` shows no "
+            "group %s,\nthe rule is not installed: make udev_install."
+            % (what, GROUP, GROUP, what, GROUP))
 
 
 def os_error(e, what, doing):

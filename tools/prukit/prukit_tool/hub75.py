@@ -517,18 +517,22 @@ def run(args):
         end = time.monotonic() + args.seconds if args.seconds else None
         step = 1.0 / args.speed
         t = time.monotonic()
-        while True:
-            for x0 in range(W, -bw * scale - 1, -1):
-                fb.show(fb.frame(render_text(bitmap, scale, W, H, x0, args.color,
-                                             args.background)))
-                t += step
-                now = time.monotonic()
-                if end is not None and now >= end:
+        try:
+            while True:
+                for x0 in range(W, -bw * scale - 1, -1):
+                    fb.show(fb.frame(render_text(bitmap, scale, W, H, x0, args.color,
+                                                 args.background)))
+                    t += step
+                    now = time.monotonic()
+                    if end is not None and now >= end:
+                        break
+                    if t > now:
+                        time.sleep(t - now)
+                if end is None or time.monotonic() >= end:
                     break
-                if t > now:
-                    time.sleep(t - now)
-            if end is None or time.monotonic() >= end:
-                break
+        except KeyboardInterrupt:
+            fb.show(blank)
+            raise
         fb.show(blank)
         dump_data = blank
         return 0

@@ -172,7 +172,9 @@ def os_error(e, dev, doing):
     if code in (errno.EACCES, errno.EPERM):
         return Error(what, "The udev rule prukit installs gives %s to group %s:\n"
                      "  sudo adduser $USER %s\n"
-                     "then log in again (or run prukit with sudo)." % (dev, GROUP, GROUP))
+                     "then log in again (or run prukit with sudo).  If `ls -l %s` shows "
+                     "no group %s,\nthe rule is not installed: make udev_install."
+                     % (dev, GROUP, GROUP, dev, GROUP))
     if code in (errno.ENOENT, errno.ENXIO):
         return Error(what, missing_hint())
     if code == errno.EPIPE:
