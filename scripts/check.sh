@@ -65,7 +65,7 @@ step firmware 90 firmware_check				# [96], grows with the images
 step overlays 770 scripts/overlays.sh --check		# [791]
 step dkms 7 scripts/dkms-test.sh			# [8]
 step deb 50 scripts/deb.sh --check			# [53]: 4 packages, lintian
-step tool 22 tests/tool/test-prukit.py			# [24]: the prukit command on the host
+step tool 25 tests/tool/test-prukit.py			# [27]: the prukit command on the host
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
 # Each driver's own checks, drivers/<driver>/tests/check.sh, with the
@@ -80,6 +80,10 @@ while read -r name min path <&3; do
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
 step vmtest 2640 scripts/vm.sh test "5.10 6.1 6.12"	# [2770], 3 kernels, one boot each (and a second for 71)
+# The Debian packages on a Debian root in the VM (6.1): installed with apt,
+# upgraded, used, removed, purged (cold: debootstrap's second stage in the
+# VM first, about 8 minutes once).
+step vmdeb 24 scripts/vm.sh deb 6.1			# [26]
 # The harness again: make vmrun, vmtest and bench from a copy with no out/
 # (after the VM tests, so that a cold run has its QEMU and kernels cached).
 step fresh-clone 5 tests/harness/fresh-clone.sh		# [5]

@@ -22,8 +22,10 @@ set -euo pipefail
 
 need_pkgs debhelper dh-dkms fakeroot dpkg-dev
 [ "${1:-}" != --check ] || need_pkgs lintian
-ver=$(make -s -C "$PRUKIT_TOP" version)
-out=$PRUKIT_TOP/out/deb
+# PRUKIT_DEB_VERSION and PRUKIT_DEB_OUT: packages of another version into
+# another directory (the package test's upgrade, scripts/vm.sh deb_test).
+ver=${PRUKIT_DEB_VERSION:-$(make -s -C "$PRUKIT_TOP" version)}
+out=${PRUKIT_DEB_OUT:-$PRUKIT_TOP/out/deb}
 work=$out/build/prukit-$ver
 rm -rf "$out"
 mkdir -p "$work"
@@ -31,6 +33,7 @@ mkdir -p "$work"
 make -s -C "$PRUKIT_TOP" firmware >/dev/null || die "make firmware failed"
 make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
 dkms_source "$work/src"
+sed -i "s/^PACKAGE_VERSION=.*/PACKAGE_VERSION=\"$ver\"/" "$work/src/dkms.conf"
 make -s -C "$PRUKIT_TOP" firmware_install overlays_install udev_install modprobe_install \
 	depmod_install headers_install server_install tool_install DESTDIR="$work/root" \
 	UDEV_RULES_DIR=/lib/udev/rules.d >"$out/install.log" 2>&1 ||
@@ -58,7 +61,7 @@ EOT
 (cd "$work" && dpkg-buildpackage -b --no-sign) >"$out/build.log" 2>&1 ||
 	{ tail -n 40 "$out/build.log" >&2; die "dpkg-buildpackage failed, full log in $out/build.log"; }
 mv "$out"/build/*.deb "$out"/build/*.changes "$out"/build/*.buildinfo "$out"/
-msg "packages in out/deb: $(cd "$out" && printf '%s ' ./*.deb)"
+msg "packages in ${out#"$PRUKIT_TOP"/}: $(cd "$out" && printf '%s ' ./*.deb)"
 [ "${1:-}" = --check ] || exit 0
 
 # --- what the packages hold --------------------------------------------------

@@ -129,6 +129,8 @@ make_dtb() {
 	fdtput -t s "$base" /__symbols__ gic /interrupt-controller@2c001000
 	for o in "$VMDIR"/overlays/*.dtso; do
 		[ -e "$o" ] || continue
+		# the package test's tree: the board and the package's overlays only
+		[ -z "${VM_OVERLAY_DIR:-}" ] || continue
 		name=$(basename "$o" .dtso)
 		"$PRUKIT_TOP/scripts/dtso-build.sh" "$o" "$dir/$name.dtbo" ||
 			die "cannot build overlay $o"
@@ -464,9 +466,16 @@ deb_test() {
 	dir=$PRUKIT_TOP/out/vm/$kver/deb
 	rm -rf "$dir"
 	mkdir -p "$dir/in/debs" "$dir/ovl"
+	# the packages of this tree, and the same under an older version for
+	# the upgrade (0.1.0~old1 sorts before 0.1.0)
 	"$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb.log" 2>&1 ||
 		{ tail -n 20 "$dir/deb.log"; die "make deb failed"; }
-	cp "$PRUKIT_TOP"/out/deb/*.deb "$dir/in/debs/"
+	PRUKIT_DEB_VERSION=$(make -s -C "$PRUKIT_TOP" version)~old1 PRUKIT_DEB_OUT=$dir/old \
+		"$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb-old.log" 2>&1 ||
+		{ tail -n 20 "$dir/deb-old.log"; die "make deb of the older version failed"; }
+	mkdir -p "$dir/in/debs/new" "$dir/in/debs/old"
+	cp "$PRUKIT_TOP"/out/deb/*.deb "$dir/in/debs/new/"
+	cp "$dir"/old/*.deb "$dir/in/debs/old/"
 	kernel_header_debs "$dir/in/headers"
 	cp "$PRUKIT_TOP/tests/tool/uEnv-beagleboard.txt" "$dir/in/uEnv.txt"
 	dpkg-deb -x "$PRUKIT_TOP"/out/deb/prukit-overlays_*_all.deb "$dir/ovl"

@@ -4,8 +4,9 @@
 
     wiring.py OVERLAY.dtbo... -o DIR
 
-For each overlay: the board's expansion headers (BeagleBone Black P8/P9,
-PocketBeagle P1/P2; the board from the overlay's name), every pin the
+For each overlay and each board it fits (prukit enable's rule:
+prukit_tool.overlays.boards_of), the board's expansion headers
+(BeagleBone Black P8/P9, PocketBeagle P1/P2), every pin the
 overlay muxes marked with its signal (the PRU's r30 bit it drives, the r31
 bit it reads, or the GPIO), output or input from the pad's configuration,
 and what the wire needs (a level shifter for 5 V parts, 3.3 V-only inputs).
@@ -18,7 +19,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "prukit"))
-from prukit_tool import fdt, pins  # noqa: E402
+from prukit_tool import fdt, overlays, pins  # noqa: E402
 
 HEADERS = {"black": (("P8", 46, "_"), ("P9", 46, "_")),
            "pocket": (("P1", 36, "."), ("P2", 36, "."))}
@@ -55,10 +56,10 @@ def svg(name, ov, cells, table, board):
         sig = pad.signals.get(mode, "mode %d" % mode)
         out = "_r30_" in sig or (sig.startswith("gpio") and not cells.get(off, 0) & 0x20)
         used[hdr] = (sig, out, pad.short)
-    row, colw, top, left = 16, 430, 70, 10
+    row, colw, top, left = 16, 600, 70, 10
     hdrs = HEADERS[board]
     rows = max(n for _, n, _ in hdrs) // 2
-    width = left * 2 + colw * len(hdrs)
+    width = left * 2 + colw * len(hdrs) - 20
     height = top + rows * row + 90
     o = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" '
          'font-family="DejaVu Sans Mono, monospace" font-size="11">' % (width, height),
@@ -67,7 +68,7 @@ def svg(name, ov, cells, table, board):
          '<text x="%d" y="38">%s: %d pins; orange: PRU/GPIO output, blue: input</text>' %
          (left, "BeagleBone Black" if board == "black" else "PocketBeagle", len(used))]
     for i, (h, n, sep) in enumerate(hdrs):
-        x0 = left + i * colw + colw // 2
+        x0 = left + i * colw + 290
         o.append('<text x="%d" y="%d" text-anchor="middle" font-weight="bold">%s</text>' %
                  (x0, top - 12, h))
         o.append('<rect x="%d" y="%d" width="36" height="%d" fill="#333" rx="3"/>' %
@@ -79,11 +80,10 @@ def svg(name, ov, cells, table, board):
             if p in used:
                 sig, out, pad = used[p]
                 fill = "#f39c12" if out else "#3498db"
-                label = "%s %s %s" % (p, "<-" if out else "->", sig) if c == 0 else \
-                    "%s %s %s" % (sig, "->" if out else "<-", p)
+                label = "%s %s %s (%s)" % (p, sig, "out" if out else "in", pad)
                 tx, anchor = (x - 10, "end") if c == 0 else (x + 10, "start")
-                o.append('<text x="%d" y="%d" text-anchor="%s">%s (%s)</text>' %
-                         (tx, y + 4, anchor, esc(label), esc(pad)))
+                o.append('<text x="%d" y="%d" text-anchor="%s" font-weight="%s">%s</text>' %
+                         (tx, y + 4, anchor, "bold", esc(label)))
             else:
                 fill = "#777"
             o.append('<circle cx="%d" cy="%d" r="5" fill="%s"/>' % (x, y, fill))
@@ -117,9 +117,14 @@ def main():
             c = n.cells("pinctrl-single,pins")
             for i in range(0, len(c) - 2, 3):
                 cells[0x800 + c[i]] = c[i + 1]
-        board = "pocket" if "POCKET" in name else "black"
-        with open(os.path.join(a.out, name + ".svg"), "w") as f:
-            f.write(svg(name, ov, cells, table, board))
+        # one picture per board it fits: NAME.svg, and NAME-pocketbeagle.svg
+        # for an overlay of the Black that fits the PocketBeagle too
+        for i, board in enumerate(overlays.boards_of(ov, table)):
+            if i and not ov.pads:
+                continue
+            suffix = "-pocketbeagle" if i and board == "pocket" else ""
+            with open(os.path.join(a.out, name + suffix + ".svg"), "w") as f:
+                f.write(svg(name, ov, cells, table, board))
     return 0
 
 

@@ -114,6 +114,21 @@ check(rc == 1 and "no overlay nosuch" in err and "PRUKIT-WS281X-00A0" in err and
 rc, out, err = run("enable", "ws281x")
 check(rc == 0 and "already" in out, "ws281x resolves to PRUKIT-WS281X-00A0, not -48", out + err)
 
+with open(os.path.join(dtdir, "model"), "w") as f:
+    f.write("TI AM335x PocketBeagle\0")
+pocket = os.path.join(tmp, "uEnv-pocket.txt")
+shutil.copy(FIXTURE, pocket)
+rc, out, err = run("enable", "ws281x", "--free-pins", env={"PRUKIT_UENV": pocket})
+u = text(pocket).splitlines()
+check(rc == 0 and "uboot_overlay_addr4=%s/PRUKIT-WS281X-00A0.dtbo" % fw in u and
+      "disable_uboot_overlay_audio=1" not in u,
+      "enable ws281x on a PocketBeagle (P1.33, no HDMI audio there): no audio line", out + err)
+rc, out, err = run("enable", "hub75", env={"PRUKIT_UENV": pocket})
+check(rc == 1 and "use PRUKIT-HUB75-POCKETSCROLLER-00A0 instead" in err,
+      "enable of the Black's hub75 on a PocketBeagle: refused, names the PocketScroller's", err)
+with open(os.path.join(dtdir, "model"), "w") as f:
+    f.write("TI AM335x BeagleBone Black\0")
+
 os.unlink(os.path.join(fw, "prukit", "beaglelogic-pru1.elf"))
 rc, out, err = run("enable", "beaglelogic")
 check(rc == 1 and "prukit/beaglelogic-pru1.elf" in err and "prukit-firmware" in err,
@@ -208,6 +223,21 @@ check(rc == 1 and "does not exist" in err and "Traceback" not in err,
 rc, out, err = run("enable")
 check(rc == 2 and "the following arguments are required: overlay" in err,
       "enable without a name: usage error", err)
+
+# ---- the wiring pictures in Documentation/wiring are what the overlays give
+wd = os.path.join(tmp, "wiring")
+p = subprocess.run([os.path.join(TOP, "tools", "wiring.py"), "-o", wd] +
+                   sorted(os.path.join(TOP, "out", "overlays", f)
+                          for f in os.listdir(os.path.join(TOP, "out", "overlays"))
+                          if f.endswith(".dtbo")), capture_output=True, text=True)
+doc = os.path.join(TOP, "Documentation", "wiring")
+made = sorted(os.listdir(wd)) if p.returncode == 0 else []
+have = sorted(f for f in os.listdir(doc) if f.endswith(".svg")) if os.path.isdir(doc) else []
+stale = [f for f in made if f not in have or text(os.path.join(wd, f)) != text(os.path.join(doc, f))]
+check(p.returncode == 0 and made and made == have and not stale,
+      "Documentation/wiring/*.svg (%d) are what tools/wiring.py draws from the overlays and "
+      "the pin table (regenerate: tools/wiring.py out/overlays/*.dtbo -o Documentation/wiring)"
+      % len(made), p.stderr + " ".join(stale or sorted(set(made) ^ set(have))))
 
 shutil.rmtree(tmp)
 sys.exit(failed)

@@ -55,9 +55,18 @@ def info(name, path=None):
                     "reinstall it: sudo apt install --reinstall prukit-overlays")
 
 
-def for_board(name):
-    """The board an overlay is made for, from its name."""
-    return "pocket" if "POCKET" in name else "black"
+def boards_of(ov, table):
+    """The boards an overlay can be used on: the PocketBeagle's (a POCKET in
+    its name: made for it, or a cape of it), else each board that has a
+    header pin for every pad it muxes."""
+    if "POCKET" in ov.name:
+        return ["pocket"]
+    return [b for b in pins.BOARDS
+            if all(b in getattr(table.pads.get(o), "header", {}) for o in ov.pads)]
+
+
+def board_name(board):
+    return "PocketBeagle" if board == "pocket" else "BeagleBone Black"
 
 
 def missing_firmware(ov):
@@ -122,15 +131,16 @@ def cmd_list(args):
     board, _ = pins.running_board()
     for name, path in have.items():
         ov = info(name, path)
-        b = for_board(name)
+        fits = boards_of(ov, table)
+        b = board if board in fits else fits[0] if fits else None
         pads = ", ".join(table.describe(o, b) for o in sorted(ov.pads)[:4])
         if len(ov.pads) > 4:
             pads += " and %d more" % (len(ov.pads) - 4)
         print("%s %-36s %s, %s%s" % ("*" if name in enabled else " ", name,
                                      "+".join(p.upper() for p in ov.prus) or "no PRU",
                                      ("pins " + pads) if ov.pads else "no pins",
-                                     "" if not board or b == board else " (for the %s)" %
-                                     ("PocketBeagle" if b == "pocket" else "BeagleBone Black")))
+                                     "" if not board or board in fits else " (for the %s)" %
+                                     " and ".join(board_name(f) for f in fits)))
     print("(* enabled in %s)" % uenv.path())
     return 0
 
@@ -141,14 +151,15 @@ def cmd_enable(args):
     ov = info(name)
     table = pins.PinTable()
     board, model = pins.running_board()
-    target = for_board(name)
-    if board and board != target:
-        alt = [n for n in installed() if for_board(n) == board and
-               n.split("-")[1] == name.split("-")[1]]
+    fits = boards_of(ov, table)
+    if board and board not in fits:
+        alt = [n for n in installed() if n.split("-")[1] == name.split("-")[1] and
+               board in boards_of(info(n), table)]
         raise Error("%s is made for the %s, and this is a %s" %
-                    (name, "PocketBeagle" if target == "pocket" else "BeagleBone Black", model),
+                    (name, " and ".join(board_name(f) for f in fits) or "no board", model),
                     ("use %s instead" % alt[0]) if alt else
                     "its pins are not on this board's headers")
+    target = board or (fits[0] if fits else "black")
     lost = missing_firmware(ov)
     if lost:
         raise Error("%s loads %s, missing from %s" % (name, ", ".join(lost), firmware_dir()),

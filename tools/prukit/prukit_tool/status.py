@@ -128,6 +128,7 @@ def cmd_status(args):
         for ph in _cells(os.path.join(path, "of_node", "ti,prus")):
             holders.setdefault(ph, []).append("%s (%s)" % (name, comp))
     cores = 0
+    by_phandle = {}
     for r in sorted(glob.glob(sysfs("class", "remoteproc", "remoteproc*"))):
         devname = read(os.path.join(r, "name"), "?")
         core = core_name(devname)
@@ -136,6 +137,7 @@ def cmd_status(args):
         cores += 1
         dev = os.path.join(r, "device")
         held = ", ".join(holders.get(phandle_of(dev), []))
+        by_phandle[phandle_of(dev)] = (core, r, held)
         fw = read(os.path.join(r, "firmware"), "?")
         state = read(os.path.join(r, "state"), "?")
         print("  %s  %-16s %-8s firmware %s, driver %s%s" %
@@ -157,9 +159,21 @@ def cmd_status(args):
         drv = driver_of(path)
         if not drv:
             mod = MODULE.get(comp)
-            print("  %-14s %s: no driver bound%s" %
-                  (comp, name, (": sudo modprobe %s (if it is loaded, dmesg says why it did "
-                                "not bind)" % mod) if mod else ""))
+            why = ""
+            if mod and not os.path.isdir(sysfs("module", mod)):
+                why = ": module %s not loaded: sudo modprobe %s" % (mod, mod)
+            elif mod:
+                why = ": %s is loaded but did not bind (dmesg | grep %s)" % (mod, mod)
+                for ph in _cells(os.path.join(path, "of_node", "ti,prus")):
+                    core, r, held = by_phandle.get(ph, (None, None, ""))
+                    if core and not held and read(os.path.join(r, "state")) != "offline":
+                        why += ("; %s runs %s for someone else: stop it (echo stop | sudo tee "
+                                "%s/state) and bind again (sudo modprobe -r %s; sudo modprobe "
+                                "%s)" % (core.upper(), read(os.path.join(r, "firmware"), "?"),
+                                         r.replace(sysfs(), "/sys", 1), mod, mod))
+                    elif core and held:
+                        why += "; %s is held by %s" % (core.upper(), held)
+            print("  %-14s %s: no driver bound%s" % (comp, name, why))
             continue
         nodes = nodes_of(path)
         if comp == "prukit,beaglelogic" and os.path.exists("/dev/beaglelogic"):
