@@ -106,7 +106,13 @@ done
 
 if [ "$MODE" = build ]; then
 	mkdir -p "$OUT"
-	rm -f "$OUT"/*.dtbo
+	# Each blob is replaced in one rename (dtso-build.sh), and only blobs
+	# whose source is gone are removed: a make deb or test reading
+	# out/overlays meanwhile never finds it half empty.
+	for f in "$OUT"/*.dtbo; do
+		[ -e "$f" ] || continue
+		[ -e "$OVL_SRC/$(basename "$f" .dtbo).dtso" ] || rm -f "$f"
+	done
 	[ ${#overlays[@]} -gt 0 ] || fail "overlays: no overlays/*.dtso found"
 	for o in "${overlays[@]}"; do
 		if "$DTSO_BUILD" "$OVL_SRC/$o.dtso" "$OUT/$o.dtbo" 2>"$OUT/$o.log"; then
