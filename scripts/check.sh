@@ -63,7 +63,7 @@ step kernels 16 scripts/kernels.sh 5.10 6.1 6.12	# [18]: armmp and board builds
 step qemu 1 qemu_check					# [1]
 step firmware 90 firmware_check				# [96], grows with the images
 step overlays 770 scripts/overlays.sh --check		# [791]
-step dkms 7 scripts/dkms-test.sh			# [8]
+step dkms 22 scripts/dkms-test.sh			# [24]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
 step deb 50 scripts/deb.sh --check			# [53]: 4 packages, lintian
 step tool 25 tests/tool/test-prukit.py			# [27]: the prukit command on the host
 step prusim 145 prusim_check				# [151]
@@ -79,7 +79,7 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 2640 scripts/vm.sh test "5.10 6.1 6.12"	# [2770], 3 kernels, one boot each (and a second for 71)
+step vmtest 3150 scripts/vm.sh test "5.10 6.1 6.12"	# [3290], 3 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).

@@ -6,7 +6,7 @@ file, and status over a fake sysfs and device tree (pins held by cape
 universal's helpers).  The overlays are the built ones (out/overlays);
 the firmware directory is a temporary one.  PASS:/FAIL: lines; make
 check's "tool" step.  The same command runs in the VM against the real
-drivers (tests/vm/cases/45-prukit-status)."""
+drivers (tests/vm/cases/90-prukit-status)."""
 import os
 import shutil
 import subprocess

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-only
 """The prukit command in the guest (/usr/bin/prukit, make tool_install), run
 as root or as an unprivileged user, for the VM tests of its subcommands
-(tests/vm/cases/47-prukit-ws281x, 48-prukit-hub75, 49-prukit-capture)."""
+(tests/vm/cases/87-prukit-ws281x, 88-prukit-hub75, 89-prukit-capture)."""
 import grp
 import os
 import subprocess
