@@ -17,6 +17,25 @@ class Error(Exception):
         self.hint = hint
 
 
+def parse_ranges(text, top=None):
+    """"0,2-3" -> [0, 2, 3]: sorted, each once, each in 0..TOP (no bound
+    without TOP).  ValueError for what is not such a list, with the part
+    that is wrong."""
+    out = set()
+    for part in text.split(","):
+        a, sep, b = part.strip().partition("-")
+        try:
+            lo = int(a)
+            hi = int(b) if sep else lo
+        except ValueError:
+            raise ValueError("not a list like 0,2-3")
+        if lo < 0 or hi < lo or (top is not None and hi > top):
+            raise ValueError("bad range %r" % part if top is None else
+                             "%r is not within 0 to %d" % (part, top))
+        out.update(range(lo, hi + 1))
+    return sorted(out)
+
+
 def _top():
     """The checkout this package runs from, or None when installed."""
     top = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))

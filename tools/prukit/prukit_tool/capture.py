@@ -15,7 +15,7 @@ import os
 import shutil
 import sys
 
-from . import Error, read, sysfs
+from . import Error, parse_ranges, read, sysfs
 
 OVERLAY = "PRUKIT-BEAGLELOGIC-00A0"
 GROUP = "gpio"			# drivers/beaglelogic/udev/60-beaglelogic.rules
@@ -71,19 +71,12 @@ def parse_samples(text):
 
 def parse_channels(text):
     """argparse type: "0-7", "0,3,5-6" -> [0, 3, 5, 6] (channels 0-15)."""
-    out = set()
-    for part in text.split(","):
-        a, sep, b = part.strip().partition("-")
-        try:
-            lo = int(a)
-            hi = int(b) if sep else lo
-        except ValueError:
-            raise argparse.ArgumentTypeError("%r is not a channel list like 0-7 or 0,2,5"
-                                             % text)
-        if not 0 <= lo <= hi <= 15:
+    try:
+        return parse_ranges(text, 15)
+    except ValueError as e:
+        if "within" in str(e):
             raise argparse.ArgumentTypeError("%r: channels are 0 to 15" % text)
-        out.update(range(lo, hi + 1))
-    return sorted(out)
+        raise argparse.ArgumentTypeError("%r is not a channel list like 0-7 or 0,2,5" % text)
 
 
 def _width(text):

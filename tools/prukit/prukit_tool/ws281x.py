@@ -15,7 +15,7 @@ import glob
 import os
 import time
 
-from . import Error, read, sysfs
+from . import Error, parse_ranges, read, sysfs
 
 OVERLAY = "PRUKIT-WS281X-00A0"
 GROUP = "gpio"			# drivers/ws281x/udev/60-ws281x.rules
@@ -69,18 +69,10 @@ def _seconds(text):
 
 def parse_list(text):
     """argparse type: "0,2-3" -> [0, 2, 3] (sorted, each once)."""
-    out = set()
-    for part in text.split(","):
-        a, sep, b = part.strip().partition("-")
-        try:
-            lo = int(a)
-            hi = int(b) if sep else lo
-        except ValueError:
-            raise argparse.ArgumentTypeError("%r is not a list like 0,2-3" % text)
-        if lo < 0 or hi < lo:
-            raise argparse.ArgumentTypeError("%r: bad range %r" % (text, part))
-        out.update(range(lo, hi + 1))
-    return sorted(out)
+    try:
+        return parse_ranges(text)
+    except ValueError as e:
+        raise argparse.ArgumentTypeError("%r: %s" % (text, e))
 
 
 def register(sub):
