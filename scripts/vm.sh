@@ -468,17 +468,18 @@ deb_test() {
 	mkdir -p "$dir/in/debs" "$dir/ovl"
 	# the packages of this tree, and the same under an older version for
 	# the upgrade (0.1.0~old1 sorts before 0.1.0)
-	"$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb.log" 2>&1 ||
+	# (into DIR, so that make deb's out/deb and its lintian.log stay as they were)
+	PRUKIT_DEB_OUT=$dir/new "$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb.log" 2>&1 ||
 		{ tail -n 20 "$dir/deb.log"; die "make deb failed"; }
 	PRUKIT_DEB_VERSION=$(make -s -C "$PRUKIT_TOP" version)~old1 PRUKIT_DEB_OUT=$dir/old \
 		"$PRUKIT_TOP/scripts/deb.sh" >"$dir/deb-old.log" 2>&1 ||
 		{ tail -n 20 "$dir/deb-old.log"; die "make deb of the older version failed"; }
 	mkdir -p "$dir/in/debs/new" "$dir/in/debs/old"
-	cp "$PRUKIT_TOP"/out/deb/*.deb "$dir/in/debs/new/"
+	cp "$dir"/new/*.deb "$dir/in/debs/new/"
 	cp "$dir"/old/*.deb "$dir/in/debs/old/"
 	kernel_header_debs "$dir/in/headers"
 	cp "$PRUKIT_TOP/tests/tool/uEnv-beagleboard.txt" "$dir/in/uEnv.txt"
-	dpkg-deb -x "$PRUKIT_TOP"/out/deb/prukit-overlays_*_all.deb "$dir/ovl"
+	dpkg-deb -x "$dir"/new/prukit-overlays_*_all.deb "$dir/ovl"
 	VM_OVERLAY_DIR=$dir/ovl/lib/firmware make_dtb "$dir/dtb"
 	rootimg=$(deb_root)
 	make_initrd "$dir" deb "$VMDIR/deb/guest"
