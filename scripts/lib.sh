@@ -165,3 +165,13 @@ dkms_source() {
 		} | xargs cp --parents -t "$dir"
 	)
 }
+
+# copy_checkout DIR - copy the files a clone of the tree has (tracked and
+# untracked-but-not-ignored, with uncommitted edits; no out/) into DIR: the
+# harness's fresh trees (tests/harness/discovery.sh, fresh-clone.sh).
+copy_checkout() {
+	mkdir -p "$1"
+	(cd "$PRUKIT_TOP" && git ls-files -z --cached --others --exclude-standard |
+		while IFS= read -r -d '' f; do [ -e "$f" ] && printf '%s\0' "$f"; done |
+		xargs -0 cp --parents -t "$1") && [ ! -e "$1/out" ]
+}

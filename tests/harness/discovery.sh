@@ -31,10 +31,7 @@ check() {
 # --- the copy, and the fake driver ------------------------------------------
 
 src=$tmp/src
-mkdir -p "$src"
-(cd "$PRUKIT_TOP" && git ls-files -z --cached --others --exclude-standard |
-	while IFS= read -r -d '' f; do [ -e "$f" ] && printf '%s\0' "$f"; done |
-	xargs -0 cp --parents -t "$src") || { fail "copying the tree"; exit 1; }
+copy_checkout "$src" || { fail "copying the tree"; exit 1; }
 
 zz=$src/drivers/zz_example
 mkdir -p "$zz"/firmware/zz-test "$zz"/udev "$zz"/tests/vm/cases "$zz"/tests/vm/host

@@ -20,16 +20,8 @@ bad=0
 pass() { echo "PASS: fresh clone: $*"; }
 fail() { echo "FAIL: fresh clone: $*"; bad=1; }
 
-# copy_tree DIR: the files a clone of the tree has (with uncommitted edits)
-copy_tree() {
-	mkdir -p "$1"
-	(cd "$PRUKIT_TOP" && git ls-files -z --cached --others --exclude-standard |
-		while IFS= read -r -d '' f; do [ -e "$f" ] && printf '%s\0' "$f"; done |
-		xargs -0 cp --parents -t "$1") && [ ! -e "$1/out" ]
-}
-
 src=$tmp/src
-copy_tree "$src" || { fail "copying the tree (without out/)"; exit 1; }
+copy_checkout "$src" || { fail "copying the tree (without out/)"; exit 1; }
 
 # make vmrun: the guest must see prukit's firmware and modules, and /out
 # must come back.
@@ -69,7 +61,7 @@ fi
 
 # make vmtest with one test, in a second fresh copy (vmrun built the first).
 src2=$tmp/src2
-copy_tree "$src2" || fail "copying the tree again"
+copy_checkout "$src2" || fail "copying the tree again"
 if make -C "$src2" vmtest KVERS=6.1 TESTS=10-boot >"$tmp/vmtest.log" 2>&1 &&
 	grep -qE '^[1-9][0-9]* passed, 0 failed' "$tmp/vmtest.log"; then
 	pass "make vmtest KVERS=6.1 TESTS=10-boot: $(grep -E '^[0-9]+ passed' "$tmp/vmtest.log" | tail -n 1)"
@@ -80,7 +72,7 @@ fi
 
 # make bench, its first part, in a third (it builds tools and firmware).
 src3=$tmp/src3
-copy_tree "$src3" || fail "copying the tree a third time"
+copy_checkout "$src3" || fail "copying the tree a third time"
 if make -C "$src3" bench PARTS=prusim >"$tmp/bench.log" 2>&1 &&
 	grep -q 'M simulated cycles/s' "$tmp/bench.log" &&
 	[ -x "$src3/out/tools/prusim" ] && [ -e "$src3/out/firmware/blinky-pru0.elf" ]; then

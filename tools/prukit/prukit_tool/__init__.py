@@ -6,6 +6,7 @@ with set_defaults(func=...); a func takes the parsed arguments and returns
 the exit status.  A user's mistake or a missing piece of the system raises
 Error with what to do about it; cli.main() prints it and exits 1.
 """
+import argparse
 import os
 
 
@@ -15,6 +16,20 @@ class Error(Exception):
     def __init__(self, msg, hint=None):
         super().__init__(msg)
         self.hint = hint
+
+
+def number_arg(convert, ok, bad, out_of_range):
+    """An argparse type: CONVERT(text) (int, float, ...) whose result OK
+    accepts; BAD and OUT_OF_RANGE are the messages, "%r" the text given."""
+    def parse(text):
+        try:
+            n = convert(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(bad % text)
+        if not ok(n):
+            raise argparse.ArgumentTypeError(out_of_range % text)
+        return n
+    return parse
 
 
 def parse_ranges(text, top=None):

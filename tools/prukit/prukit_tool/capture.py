@@ -15,7 +15,7 @@ import os
 import shutil
 import sys
 
-from . import Error, parse_ranges, read, sysfs
+from . import Error, number_arg, parse_ranges, read, sysfs
 
 OVERLAY = "PRUKIT-BEAGLELOGIC-00A0"
 GROUP = "gpio"			# drivers/beaglelogic/udev/60-beaglelogic.rules
@@ -79,14 +79,8 @@ def parse_channels(text):
         raise argparse.ArgumentTypeError("%r is not a channel list like 0-7 or 0,2,5" % text)
 
 
-def _width(text):
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number of columns" % text)
-    if not 20 <= n <= 10000:
-        raise argparse.ArgumentTypeError("%r is not in 20..10000 columns" % text)
-    return n
+_width = number_arg(int, lambda n: 20 <= n <= 10000,
+                    "%r is not a number of columns", "%r is not in 20..10000 columns")
 
 
 def register(sub):

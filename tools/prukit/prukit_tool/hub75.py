@@ -17,7 +17,7 @@ import struct
 import sys
 import time
 
-from . import Error, read, sysfs
+from . import Error, number_arg, read, sysfs
 
 OVERLAY = "PRUKIT-HUB75-00A0"
 GROUP = "video"			# udev's own rules give /dev/fbN to it
@@ -157,34 +157,16 @@ def _colour(text):
     return rgb
 
 
-def _seconds(text):
-    try:
-        s = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number of seconds" % text)
-    if not 0 < s <= 86400:
-        raise argparse.ArgumentTypeError("%r is not in (0, 86400] seconds" % text)
-    return s
+_seconds = number_arg(float, lambda s: 0 < s <= 86400,
+                      "%r is not a number of seconds", "%r is not in (0, 86400] seconds")
 
 
-def _positive(text):
-    try:
-        n = int(text, 0)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number" % text)
-    if not 1 <= n <= 64:
-        raise argparse.ArgumentTypeError("%r is not in 1..64" % text)
-    return n
+_positive = number_arg(lambda t: int(t, 0), lambda n: 1 <= n <= 64,
+                       "%r is not a number", "%r is not in 1..64")
 
 
-def _speed(text):
-    try:
-        s = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number of pixels per second" % text)
-    if not 0 < s <= 1000:
-        raise argparse.ArgumentTypeError("%r is not in (0, 1000] pixels per second" % text)
-    return s
+_speed = number_arg(float, lambda s: 0 < s <= 1000, "%r is not a number of pixels per second",
+                    "%r is not in (0, 1000] pixels per second")
 
 
 def register(sub):

@@ -15,7 +15,7 @@ import glob
 import os
 import time
 
-from . import Error, parse_ranges, read, sysfs
+from . import Error, number_arg, parse_ranges, read, sysfs
 
 OVERLAY = "PRUKIT-WS281X-00A0"
 GROUP = "gpio"			# drivers/ws281x/udev/60-ws281x.rules
@@ -23,48 +23,20 @@ RAINBOW_STEPS = 32		# frames of one turn of the rainbow
 SWEEP_STEPS = 16		# frames from dark to full in the brightness sweep
 
 
-def _count(text):
-    """argparse type: a whole number >= 1."""
-    try:
-        n = int(text, 0)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number" % text)
-    if n < 1:
-        raise argparse.ArgumentTypeError("%r: at least 1" % text)
-    return n
+_count = number_arg(lambda t: int(t, 0), lambda n: n >= 1,
+                    "%r is not a number", "%r: at least 1")
 
 
-def _loops(text):
-    """argparse type: a whole number >= 0 (0: until interrupted)."""
-    try:
-        n = int(text, 0)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number" % text)
-    if n < 0:
-        raise argparse.ArgumentTypeError("%r: 0 (for ever) or more" % text)
-    return n
+_loops = number_arg(lambda t: int(t, 0), lambda n: n >= 0,  # 0: until interrupted
+                    "%r is not a number", "%r: 0 (for ever) or more")
 
 
-def _level(text):
-    """argparse type: 0..255."""
-    try:
-        n = int(text, 0)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number" % text)
-    if not 0 <= n <= 255:
-        raise argparse.ArgumentTypeError("%r is not in 0..255" % text)
-    return n
+_level = number_arg(lambda t: int(t, 0), lambda n: 0 <= n <= 255,
+                    "%r is not a number", "%r is not in 0..255")
 
 
-def _seconds(text):
-    """argparse type: seconds >= 0, decimals allowed."""
-    try:
-        s = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError("%r is not a number of seconds" % text)
-    if not 0 <= s < 3600:
-        raise argparse.ArgumentTypeError("%r is not in 0..3600 seconds" % text)
-    return s
+_seconds = number_arg(float, lambda s: 0 <= s < 3600,
+                      "%r is not a number of seconds", "%r is not in 0..3600 seconds")
 
 
 def parse_list(text):
