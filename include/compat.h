@@ -411,4 +411,112 @@ static void update##_compat(struct drm_plane *plane, struct drm_plane_state *old
 #endif
 #endif /* PRUKIT_COMPAT_DRM */
 
+/*
+ * The PWM subsystem, for the PWM drivers (pru_pwm), which define
+ * PRUKIT_COMPAT_PWM before including this file.  Each difference is
+ * probed in <linux/pwm.h> (Kbuild), not taken from a version number: TI's
+ * and Debian's kernels of one version backport different changes (Debian's
+ * 6.1 has the int get_state() of v6.2).
+ */
+#ifdef PRUKIT_COMPAT_PWM
+#include <linux/device.h>
+#include <linux/err.h>
+#include <linux/pwm.h>
+
+/*
+ * v6.9: the core allocates the chip ("pwm: Provide an alloc function for
+ * pwm_chips"), with the driver's data behind it (pwmchip_get_drvdata())
+ * and its own struct device inside.  Before, a driver embedded the chip in
+ * its data and set chip->dev (and chip->base = -1 where the chip has a
+ * base: the core picks a free range of PWM numbers, gone in v6.5's "pwm:
+ * Drop support for forcing the base of a pwm_chip").
+ */
+#ifdef PRUKIT_HAVE_PWMCHIP_ALLOC
+#define prukit_devm_pwmchip_alloc(parent, npwm, size)	devm_pwmchip_alloc(parent, npwm, size)
+#define prukit_pwmchip_priv(chip)			pwmchip_get_drvdata(chip)
+#else
+struct prukit_pwmchip {
+	struct pwm_chip chip;
+	u64 priv[];
+};
+
+static inline struct pwm_chip *prukit_devm_pwmchip_alloc(struct device *parent,
+							 unsigned int npwm, size_t size)
+{
+	struct prukit_pwmchip *p = devm_kzalloc(parent, sizeof(*p) + size, GFP_KERNEL);
+
+	if (!p)
+		return ERR_PTR(-ENOMEM);
+	p->chip.dev = parent;
+	p->chip.npwm = npwm;
+#ifdef PRUKIT_HAVE_PWM_CHIP_BASE
+	p->chip.base = -1;
+#endif
+	return &p->chip;
+}
+
+static inline void *prukit_pwmchip_priv(struct pwm_chip *chip)
+{
+	return container_of(chip, struct prukit_pwmchip, chip)->priv;
+}
+#endif
+
+/*
+ * v5.14: devm_pwmchip_add() ("pwm: Add a devm variant of pwmchip_add()").
+ * 5.10's pwmchip_remove() returns int, and refuses (-EBUSY) a chip whose
+ * PWMs a kernel consumer still holds: a device link unbinds such
+ * consumers first (of_pwm_get() makes one from v5.10 on).
+ */
+#ifdef PRUKIT_HAVE_DEVM_PWMCHIP_ADD
+#define prukit_devm_pwmchip_add(dev, chip)	devm_pwmchip_add(dev, chip)
+#else
+static inline void prukit_pwmchip_remove(void *chip)
+{
+	pwmchip_remove(chip);
+}
+
+static inline int prukit_devm_pwmchip_add(struct device *dev, struct pwm_chip *chip)
+{
+	int ret = pwmchip_add(chip);
+
+	return ret ? ret : devm_add_action_or_reset(dev, prukit_pwmchip_remove, chip);
+}
+#endif
+
+/*
+ * v6.7: the chip's module comes from pwmchip_add() (__pwmchip_add(),
+ * "pwm: Make pwmchip_add() take an owner"), struct pwm_ops lost .owner.
+ */
+#ifdef PRUKIT_HAVE_PWMCHIP_ADD_OWNER
+#define PRUKIT_PWM_OPS_OWNER
+#else
+#define PRUKIT_PWM_OPS_OWNER	.owner = THIS_MODULE,
+#endif
+
+/*
+ * Three cells in "pwms" (channel, period, flags): the core reads
+ * "#pwm-cells" itself from v5.17 ("pwm: Make of_pwm_xlate_with_flags()
+ * work with #pwm-cells = <2>"); 5.10 defaults to two cells.
+ */
+#ifdef PRUKIT_HAVE_PWM_OF_N_CELLS
+static inline void prukit_pwmchip_of_cells(struct pwm_chip *chip)
+{
+	chip->of_xlate = of_pwm_xlate_with_flags;
+	chip->of_pwm_n_cells = 3;
+}
+#else
+static inline void prukit_pwmchip_of_cells(struct pwm_chip *chip) { }
+#endif
+
+/*
+ * v6.2: .get_state() returns int ("pwm: Make .get_state() callback return
+ * an error code"; in Debian's 6.1 too).  A driver writes the int form,
+ * @fn, and names it with PRUKIT_PWM_GET_STATE(fn) in its ops, which picks
+ * it or the void wrapper PRUKIT_PWM_DEFINE_GET_STATE(fn) defines, by the
+ * member's type.
+ */
+#define PRUKIT_PWM_DEFINE_GET_STATE(fn)							static void __maybe_unused fn##_void(struct pwm_chip *chip,							     struct pwm_device *pwm,							     struct pwm_state *state)			{											fn(chip, pwm, state);							}
+#define PRUKIT_PWM_GET_STATE(fn)							.get_state = __builtin_choose_expr(							__builtin_types_compatible_p(typeof(((struct pwm_ops *)0)->get_state), 			int (*)(struct pwm_chip *, struct pwm_device *,						struct pwm_state *)),						(fn), (fn##_void))
+#endif /* PRUKIT_COMPAT_PWM */
+
 #endif /* PRUKIT_COMPAT_H */
