@@ -424,12 +424,11 @@ static void update##_compat(struct drm_plane *plane, struct drm_plane_state *old
 #include <linux/pwm.h>
 
 /*
- * v6.9: the core allocates the chip ("pwm: Provide an alloc function for
- * pwm_chips"), with the driver's data behind it (pwmchip_get_drvdata())
- * and its own struct device inside.  Before, a driver embedded the chip in
- * its data and set chip->dev (and chip->base = -1 where the chip has a
- * base: the core picks a free range of PWM numbers, gone in v6.5's "pwm:
- * Drop support for forcing the base of a pwm_chip").
+ * v6.9: the core allocates the chip (devm_pwmchip_alloc()), with the
+ * driver's data behind it (pwmchip_get_drvdata()) and its own struct
+ * device inside.  Before, a driver embedded the chip in
+ * its data and set chip->dev, and chip->base = -1 where the chip still has
+ * a base (5.10 and 6.1: the core then picks a free range of PWM numbers).
  */
 #ifdef PRUKIT_HAVE_PWMCHIP_ALLOC
 #define prukit_devm_pwmchip_alloc(parent, npwm, size)	devm_pwmchip_alloc(parent, npwm, size)
@@ -462,10 +461,11 @@ static inline void *prukit_pwmchip_priv(struct pwm_chip *chip)
 #endif
 
 /*
- * v5.14: devm_pwmchip_add() ("pwm: Add a devm variant of pwmchip_add()").
- * 5.10's pwmchip_remove() returns int, and refuses (-EBUSY) a chip whose
- * PWMs a kernel consumer still holds: a device link unbinds such
- * consumers first (of_pwm_get() makes one from v5.10 on).
+ * devm_pwmchip_add() came after 5.10 (6.1 has it).  5.10's
+ * pwmchip_remove() returns int: it unexports the sysfs channels, then
+ * refuses (-EBUSY) a chip whose PWMs a kernel consumer still holds; 5.10's
+ * of_pwm_get() links such a consumer to the chip's device
+ * (DL_FLAG_AUTOREMOVE_CONSUMER), so the driver core unbinds it first.
  */
 #ifdef PRUKIT_HAVE_DEVM_PWMCHIP_ADD
 #define prukit_devm_pwmchip_add(dev, chip)	devm_pwmchip_add(dev, chip)
@@ -484,8 +484,9 @@ static inline int prukit_devm_pwmchip_add(struct device *dev, struct pwm_chip *c
 #endif
 
 /*
- * v6.7: the chip's module comes from pwmchip_add() (__pwmchip_add(),
- * "pwm: Make pwmchip_add() take an owner"), struct pwm_ops lost .owner.
+ * The chip's module: from pwmchip_add() where the core has
+ * __pwmchip_add() (6.12; struct pwm_ops lost .owner with it), else
+ * struct pwm_ops' .owner (5.10, 6.1).
  */
 #ifdef PRUKIT_HAVE_PWMCHIP_ADD_OWNER
 #define PRUKIT_PWM_OPS_OWNER
@@ -494,9 +495,10 @@ static inline int prukit_devm_pwmchip_add(struct device *dev, struct pwm_chip *c
 #endif
 
 /*
- * Three cells in "pwms" (channel, period, flags): the core reads
- * "#pwm-cells" itself from v5.17 ("pwm: Make of_pwm_xlate_with_flags()
- * work with #pwm-cells = <2>"); 5.10 defaults to two cells.
+ * Three cells in "pwms" (channel, period, flags): 6.1's core takes the
+ * count from "#pwm-cells" with of_pwm_xlate_with_flags(), and 6.12's has
+ * no of_pwm_n_cells; 5.10's defaults to of_pwm_simple_xlate() and two
+ * cells, so where the member is there the driver sets both.
  */
 #ifdef PRUKIT_HAVE_PWM_OF_N_CELLS
 static inline void prukit_pwmchip_of_cells(struct pwm_chip *chip)
@@ -509,14 +511,26 @@ static inline void prukit_pwmchip_of_cells(struct pwm_chip *chip) { }
 #endif
 
 /*
- * v6.2: .get_state() returns int ("pwm: Make .get_state() callback return
- * an error code"; in Debian's 6.1 too).  A driver writes the int form,
- * @fn, and names it with PRUKIT_PWM_GET_STATE(fn) in its ops, which picks
- * it or the void wrapper PRUKIT_PWM_DEFINE_GET_STATE(fn) defines, by the
+ * v6.2: .get_state() returns int (backported: Debian's 6.1 has it too).
+ * A driver writes the int form, @fn, and names it with
+ * PRUKIT_PWM_GET_STATE(fn) in its ops, which picks it or the void
+ * wrapper PRUKIT_PWM_DEFINE_GET_STATE(fn) defines, by the
  * member's type.
  */
-#define PRUKIT_PWM_DEFINE_GET_STATE(fn)							static void __maybe_unused fn##_void(struct pwm_chip *chip,							     struct pwm_device *pwm,							     struct pwm_state *state)			{											fn(chip, pwm, state);							}
-#define PRUKIT_PWM_GET_STATE(fn)							.get_state = __builtin_choose_expr(							__builtin_types_compatible_p(typeof(((struct pwm_ops *)0)->get_state), 			int (*)(struct pwm_chip *, struct pwm_device *,						struct pwm_state *)),						(fn), (fn##_void))
+#define PRUKIT_PWM_DEFINE_GET_STATE(fn)					\
+	static void __maybe_unused fn##_void(struct pwm_chip *chip,	\
+					     struct pwm_device *pwm,	\
+					     struct pwm_state *state)	\
+	{								\
+		fn(chip, pwm, state);					\
+	}
+#define PRUKIT_PWM_GET_STATE(fn)					\
+	.get_state = __builtin_choose_expr(				\
+		__builtin_types_compatible_p(				\
+			typeof(((const struct pwm_ops *)0)->get_state), \
+			int (*)(struct pwm_chip *, struct pwm_device *,	\
+				struct pwm_state *)),			\
+		(fn), (fn##_void))
 #endif /* PRUKIT_COMPAT_PWM */
 
 #endif /* PRUKIT_COMPAT_H */

@@ -30,17 +30,22 @@
 #     map, one on the PocketScroller's) and the ARM's instructions per pixel
 #     to turn a damaged frame into bit planes (callgrind, host build of
 #     drivers/hub75/hub75_conv.c; drivers/hub75/tests/bench.sh)
+#   - pru_pwm: channels, resolution, periods, the duty range settable
+#     exactly and the highest frequency with 8 and 10 bits of it (from the
+#     firmware's gaps, checked in prusim), and the ARM's instructions per
+#     duty update (callgrind, host build of drivers/pru_pwm/pru_pwm_table.c;
+#     drivers/pru_pwm/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 #
 # Usage: bench.sh [PART...] (make bench [PARTS="..."]): the parts named, in
-# the order above, or all of them: prusim rpmsg-fw ws281x beaglelogic hub75
+# the order above, or all of them: prusim rpmsg-fw ws281x beaglelogic hub75 pwm
 # vm stress.  Whatever the parts, the host tools and the firmware are built
 # first (a fresh clone needs nothing else).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 vm stress"
+ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm vm stress"
 for p in "$@"; do
 	[[ " $ALL_PARTS " == *" $p "* ]] || die "bench: no part '$p' (parts: $ALL_PARTS)"
 done
@@ -76,6 +81,12 @@ if want hub75; then
 		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/hub75-bench.log" || true
 		  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
 	grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
+fi
+if want pwm; then
+	"$PRUKIT_TOP/drivers/pru_pwm/tests/bench.sh" >"$PRUKIT_TOP/out/pru_pwm-bench.log" 2>&1 ||
+		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_pwm-bench.log" || true
+		  die "drivers/pru_pwm/tests/bench.sh failed; see out/pru_pwm-bench.log"; }
+	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_pwm-bench.log"
 fi
 if want vm; then
 	# The simulator's speed, side by side: the same firmware (blinky on both

@@ -65,7 +65,7 @@ step firmware 90 firmware_check				# [96], grows with the images
 step overlays 770 scripts/overlays.sh --check		# [791]
 step dkms 22 scripts/dkms-test.sh			# [24]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
 step deb 50 scripts/deb.sh --check			# [53]: 4 packages, lintian
-step tool 25 tests/tool/test-prukit.py			# [27]: the prukit command on the host
+step tool 33 tests/tool/test-prukit.py			# [35]: the prukit command on the host
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
 # Each driver's own checks, drivers/<driver>/tests/check.sh, with the

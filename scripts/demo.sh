@@ -21,6 +21,10 @@
 #    the pins by tools/hub75-decode.py and drawn as the panel would look
 #    (drivers/hub75/tests/hub75_demo.py: matrix-picture.png,
 #    matrix-scroll.gif, matrix-scroll.png);
+#  - prukit's pru_pwm driver (tests/vm/demo/servo): four servos swept
+#    through the PWM chip's sysfs files after prukit servo set them, every
+#    pulse measured from the pins and drawn over time
+#    (drivers/pru_pwm/tests/servo_demo.py: servo.png, servo.vcd);
 #  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
 #    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel),
 #    on the kernel's pru_rproc with the kick prukit_pru gives it
@@ -138,11 +142,18 @@ mkdir -p "$out/matrix"
 mv "$out"/hub75.json "$out"/picture.* "$out"/scroll-* "$out/matrix/"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" show "$out/matrix" "$out"
 
+# prukit's pru_pwm driver: the servo sweep
+echo
+echo "prukit's pru_pwm driver: four servos (P8_27 - P8_30, PRUKIT-PWM-00A0) swept between 600 and"
+echo "2400 us at 50 Hz; every pulse measured from the pins (each must be a width written):"
+/usr/bin/python3 "$PRUKIT_TOP/drivers/pru_pwm/tests/servo_demo.py" "$PRUKIT_TOP/out/tools/prusim" "$out"
+
 echo
 msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
 	"$out/neopixel-led0.png, $out/logic-uart.png, $out/logic-spi.png, $out/logic.png;" \
 	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
 	"$out/logic.sr"
+msg "pru_pwm: $out/servo.png; VCD: $out/servo.vcd"
 msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \
 	"$out/ws281x-strings.gif, $out/ws281x-strings-wave.png; VCD: $out/ws281x-leds.vcd," \

@@ -31,6 +31,8 @@ NOTES = {
                     "a 74HCT245 buffer makes it sure. Join the grounds.",
     "prukit,beaglelogic": "Inputs are 3.3 V only and not 5 V tolerant: divide or shift 5 V "
                           "signals down. Join the grounds.",
+    "prukit,pru-pwm": "Outputs are 3.3 V: hobby servos take it as their signal; power them "
+                      "from their own 5-6 V supply, never from the board. Join the grounds.",
     "neopixel": "Output is 3.3 V: a 5 V NeoPixel string needs a level shifter on its data "
                 "line (e.g. 74AHCT125). Join the grounds.",
 }

@@ -43,8 +43,8 @@
  * @dev: the platform device
  * @pru: the core
  * @ctrl: its control block
- * @lock: serialises changes (the table the firmware does not play is the
- *	driver's while it holds the lock)
+ * @lock: serialises changes and reads of the tables (the table the
+ *	firmware does not play is the driver's while it holds the lock)
  * @req: what each channel was last asked, in cycles
  * @r30_bit: each channel's R30 bit
  * @nchan: channels
@@ -53,7 +53,7 @@ struct pru_pwm {
 	struct device *dev;
 	struct prukit_pru *pru;
 	struct pru_pwm_ctrl __iomem *ctrl;
-	struct mutex lock;
+	struct mutex lock;	/* see above */
 	struct pru_pwm_req req[PRU_PWM_CHANNELS];
 	u8 r30_bit[PRU_PWM_CHANNELS];
 	unsigned int nchan;
@@ -163,6 +163,7 @@ static int pru_pwm_get_state(struct pwm_chip *chip, struct pwm_device *pwm,
 	mutex_unlock(&pp->lock);
 	return 0;
 }
+
 PRUKIT_PWM_DEFINE_GET_STATE(pru_pwm_get_state)
 
 static const struct pwm_ops pru_pwm_ops = {

@@ -224,6 +224,57 @@ rc, out, err = run("enable")
 check(rc == 2 and "the following arguments are required: overlay" in err,
       "enable without a name: usage error", err)
 
+# ---- prukit servo over a fake PWM chip of pru_pwm (the VM's 83-pru-pwm runs
+# it on the real one)
+chipd = os.path.join(sysd, "class", "pwm", "pwmchip3")
+pwmdev = os.path.join(sysd, "devices", "platform", "prukit-pwm")
+os.makedirs(os.path.join(sysd, "bus", "platform", "drivers", "pru_pwm"))
+os.makedirs(pwmdev)
+os.symlink(os.path.join(sysd, "bus", "platform", "drivers", "pru_pwm"),
+           os.path.join(pwmdev, "driver"))
+os.makedirs(chipd)
+os.symlink(pwmdev, os.path.join(chipd, "device"))
+for k, v in (("npwm", "8"), ("export", ""), ("unexport", "")):
+    with open(os.path.join(chipd, k), "w") as f:
+        f.write(v)
+for n in range(8):
+    os.makedirs(os.path.join(chipd, "pwm%d" % n))
+    for k, v in (("period", "0"), ("duty_cycle", "0"), ("enable", "0"), ("polarity", "normal")):
+        with open(os.path.join(chipd, "pwm%d" % n, k), "w") as f:
+            f.write(v)
+
+
+def pwm(n, k):
+    return text(os.path.join(chipd, "pwm%d" % n, k)).strip()
+
+
+rc, out, err = run("servo", "-c", "1", "-p", "0.5")
+check(rc == 0 and (pwm(0, "period"), pwm(0, "duty_cycle"), pwm(0, "enable")) ==
+      ("20000000", "1800000", "1") and pwm(1, "enable") == "0" and "pwmchip3" in out,
+      "servo -c 1 -p 0.5: channel 1 (pwm0) 1800 us every 20 ms (the Library's position)",
+      out + err)
+rc, out, err = run("servo", "-p", "-1.5")
+check(rc == 0 and all((pwm(n, "period"), pwm(n, "duty_cycle"), pwm(n, "enable")) ==
+                      ("20000000", "600000", "1") for n in range(8)),
+      "servo -p -1.5: all eight channels 600 us", out + err)
+rc, out, err = run("servo", "-c", "8", "-w", "1234.567", "-f", "100")
+check(rc == 0 and (pwm(7, "period"), pwm(7, "duty_cycle")) == ("10000000", "1234565"),
+      "servo -c 8 -w 1234.567 -f 100: 10 ms, the width rounded down to 5 ns", out + err)
+rc, out, err = run("servo", "-c", "2", "--off")
+check(rc == 0 and pwm(1, "enable") == "0" and pwm(0, "enable") == "1",
+      "servo -c 2 --off: only channel 2 stops", out + err)
+before = [pwm(n, "duty_cycle") for n in range(8)]
+rc, out, err = run("servo", "-c", "1", "-w", "25000")
+check(rc == 1 and "does not fit" in err and before == [pwm(n, "duty_cycle") for n in range(8)],
+      "servo -w 25000 at 50 Hz: refused, nothing changed", err)
+rc, out, err = run("servo", "-c", "9")
+check(rc == 2 and "channels are 1 to 8" in err, "servo -c 9: usage error", err)
+rc, out, err = run("servo", "-p", "2")
+check(rc == 2 and "positions are -1.5 to 1.5" in err, "servo -p 2: usage error", err)
+rc, out, err = run("servo", "-p", "0", env={"PRUKIT_SYSFS": os.path.join(tmp, "nosys")})
+check(rc == 1 and "no PWM chip of prukit's pru_pwm driver" in err and "prukit enable pwm" in err,
+      "servo without a pru_pwm chip: says which overlay and module", err)
+
 # ---- the wiring pictures in Documentation/wiring are what the overlays give
 wd = os.path.join(tmp, "wiring")
 p = subprocess.run([os.path.join(TOP, "tools", "wiring.py"), "-o", wd] +

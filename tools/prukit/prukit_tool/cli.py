@@ -7,7 +7,7 @@ import sys
 from . import Error
 
 # The command modules, in the order of prukit --help.
-MODULES = ("status", "overlays", "ws281x", "hub75", "capture")
+MODULES = ("status", "overlays", "ws281x", "hub75", "capture", "servo")
 
 VERSION = "@VERSION@"  # make tool_install writes dkms.conf's PACKAGE_VERSION here
 

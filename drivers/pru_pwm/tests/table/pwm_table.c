@@ -40,8 +40,8 @@ int main(int argc, char **argv)
 		bit[i] = b;
 		req[i].period = p;
 		req[i].duty = d;
-		req[i].enabled = strchr(flags, 'e') != NULL;
-		req[i].inversed = strchr(flags, 'i') != NULL;
+		req[i].enabled = strchr(flags, 'e');
+		req[i].inversed = strchr(flags, 'i');
 	}
 	if (pru_pwm_table_build(req, bit, n, &t)) {
 		puts("EINVAL");
