@@ -49,8 +49,8 @@
 /* The loop's timing, in PRU cycles (pru_pwm_run.S) */
 #define PRU_PWM_MIN_GAP		23	/* between two steps of a period */
 /*
- * From a period's last step to its end: the loop needs 69 cycles when it
- * takes a SET there (pru_pwm_run.S), 11 more leave room for a board's
+ * From a period's last step to its end: the loop needs 71 cycles when it
+ * takes a SET there (pru_pwm_run.S), 9 more leave room for a board's
  * memory accesses being slower than the simulator's
  */
 #define PRU_PWM_END_GAP		80

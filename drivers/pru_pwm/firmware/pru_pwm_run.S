@@ -22,7 +22,7 @@
  *                 comes at E+23 at the earliest: PRU_PWM_MIN_GAP.
  *   period end:   E+4 S += period, E+5.. store the counts, read the
  *                 command, and without one, the next period's first write
- *                 at E+35 at the earliest; taking a SET, at E+69
+ *                 at E+36 at the earliest; taking a SET, at E+71
  *                 (measured in the simulator: drivers/pru_pwm/tests);
  *                 PRU_PWM_END_GAP is 80.
  *
@@ -31,11 +31,14 @@
  * IEP counter is the PRU-ICSS's, shared with the other core: firmware
  * there that restarts it (beaglelogic's and hub75's do, at each capture or
  * frame) makes the counter jump back, which a wait sees as a deadline
- * more than a period away; the period is then restarted from the step
+ * further away than any step can be (r6: the period, or the longer of the
+ * two periods while the first period of a new table waits for the end of
+ * the last one of the old); the period is then restarted from the step
  * that waits (one period's timing broken, counted in @late).
  *
  * Registers:
- *   r7  PRU_PWM_MIN_PERIOD            r8  the IEP's registers
+ *   r6  the furthest a deadline can be r7  PRU_PWM_MIN_PERIOD
+ *   r8  the IEP's registers
  *   r9  S, this period's start         r10 the table played
  *   r11 its period                     r12 its steps
  *   r13 steps written this period      r15 step.at (scratch in take)
@@ -83,7 +86,7 @@
 /*
  * wait_until DL: the next instruction issues in the cycle in which the
  * IEP counter reads DL.  A deadline already passed does not wait (counted
- * in r26); one further than a period (r11) means the counter jumped back:
+ * in r26); one further than any can be (r6) means the counter jumped back:
  * S is moved so that this step's deadline is now (counted too).
  */
 .macro	wait_until dl
@@ -99,7 +102,7 @@
 3:	sub	r29, r29, 1
 	qbne	3b, r29, 0
 	qba	6f
-4:	qbge	1b, r29, r11			/* r29 <= period: wait on */
+4:	qbge	1b, r29, r6			/* r29 <= r6: wait on */
 	lbbo	&r29, r8, IEP_COUNT, 4		/* the counter jumped back */
 	sub	r9, r29, r15
 	mov	\dl, r29
@@ -119,6 +122,7 @@ pru_pwm_run:
 	ldi	r19, 0
 	ldi	r25, 0
 	ldi	r26, 0
+	ldi	r11, 0
 
 	/* No table yet: only the command word is read. */
 .Lidle:
@@ -145,6 +149,7 @@ pru_pwm_run:
 	qblt	.Lstep, r12, r13		/* r13 < steps */
 
 	add	r9, r9, r11			/* the next period's start */
+	mov	r6, r11
 	sbbo	&r25, r18, PERIODS_OFF, 8
 	lbbo	&r21, r18, CMD_OFF, 4
 	lsr	r22, r21, 16
@@ -178,6 +183,7 @@ take:
 	qblt	.Lanswer, r7, r15		/* period < MIN_PERIOD */
 	qbbs	.Lanswer, r15, 31		/* period > MAX_PERIOD */
 	mov	r10, r22
+	max	r6, r11, r15			/* the old period ends first */
 	mov	r11, r15
 	mov	r12, r16
 	ldi	r24, 1

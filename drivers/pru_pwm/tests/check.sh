@@ -10,7 +10,7 @@
 # from a clean clone.  Prints PASS:/FAIL: lines; exits non-zero on any
 # failure.
 #
-# prukit-check-min: 23
+# prukit-check-min: 25
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"

@@ -38,7 +38,7 @@ passed = failed = 0
 
 def check(name, cond, detail=""):
     global passed, failed
-    print(("PASS: " if cond else "FAIL: ") + name + ("" if cond or not detail else ": %s" % detail))
+    print(("PASS: " if cond else "FAIL: ") + name + ("" if cond or not detail else ": %s" % (detail,)))
     if cond:
         passed += 1
     else:
@@ -67,7 +67,7 @@ MIN_PERIOD, MAX_PERIOD = D["PRU_PWM_MIN_PERIOD"], D["PRU_PWM_MAX_PERIOD"]
 IDLE = D["PRU_PWM_IDLE_PERIOD"]
 # What the loop needs from a period's last step to its end when it takes a
 # SET there (pru_pwm_run.S's count; PRU_PWM_END_GAP adds a margin)
-LOOP_END_GAP = 69
+LOOP_END_GAP = 71
 NSTEPS = D["PRU_PWM_MAX_STEPS"]
 TABLE_FMT = "<II" + "II" * NSTEPS + "III" * D["PRU_PWM_CHANNELS"]
 TABLE_BYTES = struct.calcsize(TABLE_FMT)
@@ -302,6 +302,21 @@ def sim_checks(prusim, fw, tool, work):
               "period start on (after period %s), no runt" % (at, sw),
               bool(sw) and s.late == 0 and
               s.status == status_of(2, 0) and s.active == 1, (sw, s.late, hex(s.status)))
+
+    # a SET from a long period to a short one, and back: the period played
+    # ends whole, the new one starts at its end (the waits' bound is the
+    # longer of the two while the new table waits for the old period's end)
+    lng = [(b, 20000, 1000 + 1500 * k, 1, 0) for k, b in enumerate(BITS)]
+    sht = [(b, 2000, 100 + 200 * k, 1, 0) for k, b in enumerate(BITS)]
+    tl, tsh = build(tool, work, lng, "long"), build(tool, work, sht, "short")
+    for name, first, second, at in (("20000 to 2000 cycles", tl, tsh, 35000),
+                                    ("2000 to 20000 cycles", tsh, tl, 5100)):
+        s = Sim(prusim, fw, work, "periods", first[0], second[0], 90000,
+                pokes=[(at, 16, 1), (at, 8, (2 << 16) | set_cmd)])
+        sw = matches(s, [(first[1], first[3]), (second[1], second[3])], range(1, 40))
+        check("a SET from a period of %s: the old period ends whole, the new table from "
+              "its end (after period %s), every change exact" % (name, sw),
+              bool(sw) and s.late == 0 and s.active == 1, (sw, s.late, s.active))
 
     # coinciding ends: one write
     c = [(b, 3000, 1000 if k < 4 else 2000, 1, k in (1, 5)) for k, b in enumerate(BITS)]
