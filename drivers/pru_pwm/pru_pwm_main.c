@@ -270,7 +270,7 @@ static int pru_pwm_probe(struct platform_device *pdev)
 	ret = prukit_devm_pwmchip_add(dev, chip);
 	if (ret)
 		return dev_err_probe(dev, ret, "adding the PWM chip\n");
-	dev_info(dev, "%u PWM channels on R30 of %s, 5 ns steps, periods %u ns to %u s\n",
+	dev_info(dev, "%d PWM channels on R30 of %s, 5 ns steps, periods %u ns to %u s\n",
 		 n, dev_name(&pp->pru->rproc->dev), PRU_PWM_MIN_PERIOD * PRU_PWM_NS_PER_CYCLE,
 		 PRU_PWM_MAX_PERIOD / (1000000000 / PRU_PWM_NS_PER_CYCLE));
 	return 0;

@@ -227,7 +227,7 @@ check(rc == 2 and "the following arguments are required: overlay" in err,
 # ---- prukit servo over a fake PWM chip of pru_pwm (the VM's 83-pru-pwm runs
 # it on the real one)
 chipd = os.path.join(sysd, "class", "pwm", "pwmchip3")
-pwmdev = os.path.join(sysd, "devices", "platform", "prukit-pwm")
+pwmdev = os.path.join(sysd, "devices", "platform", "pwm")
 os.makedirs(os.path.join(sysd, "bus", "platform", "drivers", "pru_pwm"))
 os.makedirs(pwmdev)
 os.symlink(os.path.join(sysd, "bus", "platform", "drivers", "pru_pwm"),
