@@ -153,8 +153,10 @@ int main(void)
 	for (;;) {
 		cmd = c->hdr.command;
 		if (cmd == last) {
-			if (c->state != PRU_ENC_STATE_COUNTING)
+			if (c->state != PRU_ENC_STATE_COUNTING) {
+				c->inputs = window();	/* the signals' levels */
 				continue;
+			}
 			/* count until the next command word */
 			cmd = pru_enc_loop(c, table, last,
 					   c->event ? PRU_R31_VEC_VALID |
