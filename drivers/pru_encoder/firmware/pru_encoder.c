@@ -14,7 +14,7 @@
 #include <prukit/pru.h>
 #include <prukit/resource_table.h>
 
-#include "pru_encoder_proto.h"
+#include "pru_encoder_fw.h"
 
 PRUKIT_RESOURCE_TABLE_EMPTY();
 
@@ -46,9 +46,6 @@ struct pru_enc_ctrl pru_enc_ctrl __attribute__((section(".prukit_ctrl"), used)) 
 
 /* (previous window << 3 | window): what the change means, PRU_ENC_T_* */
 static uint32_t table[1 << (2 * PRU_ENC_WIN_BITS)];
-
-uint32_t pru_enc_loop(volatile struct pru_enc_ctrl *c, const uint32_t *table,
-		      uint32_t last_cmd, uint32_t strobe);
 
 static uint32_t window(void)
 {
@@ -95,6 +92,14 @@ static int build_table(uint32_t pins)
 		}
 	}
 	return 0;
+}
+
+/* What R31 is written to strobe system event @event (0: nothing) */
+static uint32_t strobe(uint32_t event)
+{
+	if (!event)
+		return 0;
+	return PRU_R31_VEC_VALID | ((event - PRU_R31_EVENT_FIRST) & PRU_R31_VEC_MASK);
 }
 
 static void answer(volatile struct pru_enc_ctrl *c, uint16_t seq, uint32_t result)
@@ -158,9 +163,7 @@ int main(void)
 				continue;
 			}
 			/* count until the next command word */
-			cmd = pru_enc_loop(c, table, last,
-					   c->event ? PRU_R31_VEC_VALID |
-					   ((c->event - PRU_R31_EVENT_FIRST) & PRU_R31_VEC_MASK) : 0);
+			cmd = pru_enc_loop(c, table, last, strobe(c->event));
 		}
 		last = cmd;
 		answer(c, PRUKIT_CTRL_SEQ(cmd), handle(c, cmd));
