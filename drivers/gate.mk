@@ -15,3 +15,14 @@ prukit-needs := $(call prukit_needs_of,$(prukit-driver))
 ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)
 $(prukit-config) ?= m
 endif
+
+# A driver written for an interface that some kernels with its options lack
+# says so in its Kbuild, one line per symbol its kernel headers must
+# declare ("# prukit-kernel-api: include/linux/counter.h devm_counter_alloc"):
+# it is built only where the kernel's header has it.  dkms.conf reads the
+# same lines.
+prukit-api-lacks := $(shell sed -n 's/^\# prukit-kernel-api: *//p' $(src)/Kbuild | \
+	while read -r h s; do grep -qsw "$$s" "$(srctree)/$$h" || echo "$$h"; done)
+ifneq ($(strip $(prukit-api-lacks)),)
+$(prukit-config) :=
+endif
