@@ -21,8 +21,12 @@ endif
 # declare ("# prukit-kernel-api: include/linux/counter.h devm_counter_alloc"):
 # it is built only where the kernel's header has it.  dkms.conf reads the
 # same lines.
-prukit-api-lacks := $(shell sed -n 's/^\# prukit-kernel-api: *//p' $(src)/Kbuild | \
-	while read -r h s; do grep -qsw "$$s" "$(srctree)/$$h" || echo "$$h"; done)
+# ($(src) is absolute in an external module build, relative to the source
+# tree in a kernel tree's)
+prukit-api-kbuild := $(firstword $(wildcard $(src)/Kbuild $(srctree)/$(src)/Kbuild))
+prukit-api-lacks := $(if $(prukit-api-kbuild),$(shell \
+	sed -n 's/^\# prukit-kernel-api: *//p' $(prukit-api-kbuild) | \
+	while read -r h s; do grep -qsw "$$s" "$(srctree)/$$h" || echo "$$h"; done))
 ifneq ($(strip $(prukit-api-lacks)),)
 $(prukit-config) :=
 endif
