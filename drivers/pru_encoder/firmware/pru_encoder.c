@@ -5,9 +5,9 @@
  * Here: the control block, the transition table built from the pin
  * assignment, and the commands; the sampling loop is pru_encoder_loop.S,
  * which returns whenever a new command word appears.  While counting, a
- * command blinds the decoder for the time it takes here (a few hundred
- * cycles at most): edges in that time are seen as one change when the loop
- * resumes (one step, or a skipped state).
+ * command blinds the decoder for the time it takes here (some 70 cycles,
+ * traced in prusim): edges in that time are seen as one change when the
+ * loop resumes (one step, or a skipped state).
  */
 #include <stddef.h>
 #include <stdint.h>
