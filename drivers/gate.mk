@@ -15,3 +15,18 @@ prukit-needs := $(call prukit_needs_of,$(prukit-driver))
 ifeq ($(strip $(foreach c,$(prukit-needs),$(if $($(c)),,$(c)))),)
 $(prukit-config) ?= m
 endif
+
+# A driver written for an interface that some kernels with its options lack
+# says so in its Kbuild, one line per symbol its kernel headers must
+# declare ("# prukit-kernel-api: include/linux/counter.h devm_counter_alloc"):
+# it is built only where the kernel's header has it.  dkms.conf reads the
+# same lines.
+# ($(src) is absolute in an external module build, relative to the source
+# tree in a kernel tree's)
+prukit-api-kbuild := $(firstword $(wildcard $(src)/Kbuild $(srctree)/$(src)/Kbuild))
+prukit-api-lacks := $(if $(prukit-api-kbuild),$(shell \
+	sed -n 's/^\# prukit-kernel-api: *//p' $(prukit-api-kbuild) | \
+	while read -r h s; do grep -qsw "$$s" "$(srctree)/$$h" || echo "$$h"; done))
+ifneq ($(strip $(prukit-api-lacks)),)
+$(prukit-config) :=
+endif

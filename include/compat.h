@@ -154,10 +154,27 @@ void *rproc_da_to_va(struct rproc *rproc, u64 da, size_t len);
 #if LINUX_VERSION_CODE >= KERNEL_VERSION(6, 13, 0)
 #define EXPORT_SYMBOL_PRUKIT(sym)	EXPORT_SYMBOL_NS_GPL(sym, "PRUKIT")
 #define PRUKIT_IMPORT_NS()		MODULE_IMPORT_NS("PRUKIT")
+#define PRUKIT_IMPORT_NS_COUNTER()	MODULE_IMPORT_NS("COUNTER")
 #else
 #define EXPORT_SYMBOL_PRUKIT(sym)	EXPORT_SYMBOL_NS_GPL(sym, PRUKIT)
 #define PRUKIT_IMPORT_NS()		MODULE_IMPORT_NS(PRUKIT)
+#define PRUKIT_IMPORT_NS_COUNTER()	MODULE_IMPORT_NS(COUNTER)
 #endif
+
+/*
+ * The counter subsystem (pru_encoder).  v5.16 replaced the callbacks
+ * (struct counter_comp; "counter: Internalize sysfs interface code") and
+ * added events and /dev/counterN ("counter: Add character device
+ * interface"); v5.17 added counter_alloc()/counter_add() and their devm_
+ * forms ("counter: Provide alternative counter registration functions"),
+ * which v6.1 and v6.12 have unchanged.  5.10 has the first interface only:
+ * struct counter_device filled by the driver, counter_register(), no
+ * events, callbacks with other signatures (read in Debian's 5.10
+ * linux-source).  pru_encoder is written for the v5.17 interface; its
+ * Kbuild builds it only where <linux/counter.h> declares
+ * devm_counter_alloc(), so nothing here maps one interface onto the other.
+ * The symbols are in the COUNTER namespace (PRUKIT_IMPORT_NS_COUNTER()).
+ */
 
 /*
  * struct gpio_chip's .set callback returns void in 5.10 to 6.12 and int in

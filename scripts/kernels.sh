@@ -72,6 +72,21 @@ build_variant() {
 		symvers+=("$kit/Module.symvers")
 		echo "  ($kver has no CONFIG_RPMSG: rpmsg_core built from linux-source-$series)"
 	fi
+	# Nor has it the counter subsystem (Debian's armmp; a BeagleBone's
+	# kernel has it, for eQEP): the kernel's own counter core built beside
+	# it, where its interface is the one prukit's counter drivers are
+	# written for (not 5.10: include/compat.h; pru_encoder is not built
+	# there, as on any kernel without CONFIG_COUNTER).
+	if ! grep -q '^CONFIG_COUNTER=[ym]' "$kdir/.config"; then
+		kit=$("$PRUKIT_TOP/scripts/counter-kit.sh" "$series" "$kdir" \
+			"$PRUKIT_TOP/out/kernels/$kver-counter-kit")
+		if [ -n "$kit" ]; then
+			kcflags="$kcflags -DCONFIG_COUNTER_MODULE=1"
+			extra+=(CONFIG_COUNTER=m)
+			symvers+=("$kit/Module.symvers")
+			echo "  ($kver has no CONFIG_COUNTER: counter built from linux-source-$series)"
+		fi
+	fi
 	if [ "$variant" = board ]; then
 		pkit=$("$PRUKIT_TOP/scripts/pru-kit.sh" "$series" "$kdir" \
 			"$PRUKIT_TOP/out/kernels/$kver-pru-kit") || {

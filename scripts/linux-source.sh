@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-only
 #
-# linux-source.sh SERIES [full|dt|rpmsg|pru|modpost]
+# linux-source.sh SERIES [full|dt|rpmsg|counter|pru|modpost]
 #
 # Print the path of an extracted Debian linux-source-SERIES tree (5.10, 6.1,
 # 6.12), fetching the package through the private apt configuration
@@ -9,6 +9,7 @@
 #   full     everything (KUnit, checkpatch) - the default
 #   dt       dts, dt-bindings, scripts/dtc and the binding documents
 #   rpmsg    drivers/rpmsg (rpmsg modules for kernels built without them)
+#   counter  drivers/counter (the counter core for kernels built without it)
 #   pru      the kernel's PRU drivers for kernels built without them
 #            (scripts/pru-kit.sh): drivers/soc/ti/pruss*,
 #            drivers/irqchip/irq-pruss-intc.c, drivers/remoteproc/pru_rproc.[ch],
@@ -22,13 +23,14 @@ set -euo pipefail
 # shellcheck source=SCRIPTDIR/papt.sh
 . "$(dirname "$0")/papt.sh"
 
-series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg|pru|modpost]}
+series=${1:?usage: linux-source.sh SERIES [full|dt|rpmsg|counter|pru|modpost]}
 what=${2:-full}
 wildcards=()
 case $what in
 full) paths=() ;;
 dt) paths=(arch/arm/boot/dts include/dt-bindings scripts/dtc Documentation/devicetree/bindings) ;;
 rpmsg) paths=(drivers/rpmsg) ;;
+counter) paths=(drivers/counter) ;;
 pru)
 	paths=('drivers/soc/ti/pruss*' drivers/irqchip/irq-pruss-intc.c 'drivers/remoteproc/pru_rproc.[ch]'
 	       drivers/remoteproc/remoteproc_internal.h drivers/remoteproc/remoteproc_elf_helpers.h

@@ -185,8 +185,8 @@ make_initrd() {
 	cp "$kimage/lib/modules/$kver"/modules.{order,builtin,builtin.modinfo} "$mods/" 2>/dev/null || true
 	mkdir -p "$mods/updates"
 	for d in "$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit" \
-		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit"; do
-		# bare: the kernel's PRU drivers (and rpmsg), as a board's
+		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit" "$PRUKIT_TOP/out/kernels/$kver-counter-kit"; do
+		# bare: the kernel's PRU drivers (and rpmsg and counter), as a board's
 		# kernel package has them, not prukit's modules
 		[ $bare = 1 ] && [ "$d" = "$PRUKIT_TOP/out/kernels/$kver-board" ] && continue
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +

@@ -191,6 +191,22 @@ check "dkms.conf leaves rpmsg_pru out where the kernel lacks CONFIG_RPMSG, the r
 check "dkms.conf's list has no gap or misaligned entry without CONFIG_RPMSG" \
 	eval '! grep -qvE "^[a-z_]+ drivers/[a-z_]+/ /updates/dkms$" <<<"$no_rpmsg"'
 
+# a driver's "prukit-kernel-api:" line (pru_encoder: the counter interface
+# of v5.17): listed where the kernel's header declares the symbol, or cannot
+# be read; left out where it does not (5.10's <linux/counter.h>)
+api_opts=(CONFIG_REMOTEPROC=y CONFIG_OF=y CONFIG_COUNTER=m)
+check "dkms.conf lists pru_encoder where the kernel's headers cannot be read" \
+	grep -qx 'pru_encoder drivers/pru_encoder/ /updates/dkms' <<<"$(dkms_list "${api_opts[@]}")"
+mkdir -p "$tmp/k/include/linux"
+echo 'int counter_register(struct counter_device *const counter);' >"$tmp/k/include/linux/counter.h"
+check "dkms.conf leaves pru_encoder out where <linux/counter.h> lacks devm_counter_alloc (5.10)" \
+	eval '! grep -q "^pru_encoder " <<<"$(dkms_list "${api_opts[@]}")"'
+echo 'struct counter_device *devm_counter_alloc(struct device *dev, size_t sizeof_priv);' \
+	>"$tmp/k/include/linux/counter.h"
+check "dkms.conf lists pru_encoder where <linux/counter.h> has devm_counter_alloc" \
+	grep -qx 'pru_encoder drivers/pru_encoder/ /updates/dkms' <<<"$(dkms_list "${api_opts[@]}")"
+rm -rf "$tmp/k/include"
+
 # dkms.conf lists every driver of the registry, and no other; the options
 # it drops a module for are the module's registry line's (the zz_example
 # copy: listed with the option, dropped without).
