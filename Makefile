@@ -23,7 +23,7 @@
 #                         NeoPixel example, and shows what the pins did
 #   make bench            speed: the simulator on the host and in the VM, the layer's round
 #                         trip, rpmsg round trips, cycles per message, the drivers' figures
-#                         [PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm vm stress"]
+#                         [PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder vm stress"]
 #   make deb              Debian packages prukit-dkms, -firmware, -overlays, -tools
 #                         (arch all) into out/deb/, for a board's apt
 #   make check            everything CI runs; ends with "N passed, N failed"

@@ -35,17 +35,20 @@
 #     firmware's gaps, checked in prusim), and the ARM's instructions per
 #     duty update (callgrind, host build of drivers/pru_pwm/pru_pwm_table.c;
 #     drivers/pru_pwm/tests/bench.sh)
+#   - pru_encoder: PRU cycles per sample and decoding path, the highest
+#     edge rate counted without a miss, the event latency (prusim, the real
+#     firmware; drivers/pru_encoder/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 #
 # Usage: bench.sh [PART...] (make bench [PARTS="..."]): the parts named, in
 # the order above, or all of them: prusim rpmsg-fw ws281x beaglelogic hub75 pwm
-# vm stress.  Whatever the parts, the host tools and the firmware are built
+# encoder vm stress.  Whatever the parts, the host tools and the firmware are built
 # first (a fresh clone needs nothing else).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm vm stress"
+ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder vm stress"
 for p in "$@"; do
 	[[ " $ALL_PARTS " == *" $p "* ]] || die "bench: no part '$p' (parts: $ALL_PARTS)"
 done
@@ -87,6 +90,12 @@ if want pwm; then
 		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_pwm-bench.log" || true
 		  die "drivers/pru_pwm/tests/bench.sh failed; see out/pru_pwm-bench.log"; }
 	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_pwm-bench.log"
+fi
+if want encoder; then
+	"$PRUKIT_TOP/drivers/pru_encoder/tests/bench.sh" >"$PRUKIT_TOP/out/pru_encoder-bench.log" 2>&1 ||
+		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_encoder-bench.log" || true
+		  die "drivers/pru_encoder/tests/bench.sh failed; see out/pru_encoder-bench.log"; }
+	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_encoder-bench.log"
 fi
 if want vm; then
 	# The simulator's speed, side by side: the same firmware (blinky on both

@@ -25,6 +25,10 @@
 #    through the PWM chip's sysfs files after prukit servo set them, every
 #    pulse measured from the pins and drawn over time
 #    (drivers/pru_pwm/tests/servo_demo.py: servo.png, servo.vcd);
+#  - prukit's pru_encoder driver (tests/vm/demo/encoder): a simulated
+#    encoder turned back and forth on PRU0's inputs, its count read through
+#    sysfs after each stretch and drawn against the encoder's position
+#    (drivers/pru_encoder/tests/encoder_demo.py: encoder.png);
 #  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
 #    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel),
 #    on the kernel's pru_rproc with the kick prukit_pru gives it
@@ -148,12 +152,18 @@ echo "prukit's pru_pwm driver: four servos (P8_27 - P8_30, PRUKIT-PWM-00A0) swep
 echo "2400 us at 50 Hz; every pulse measured from the pins (each must be a width written):"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/pru_pwm/tests/servo_demo.py" "$PRUKIT_TOP/out/tools/prusim" "$out"
 
+# prukit's pru_encoder driver: the count against the encoder's position
+echo
+echo "prukit's pru_encoder driver: a simulated encoder on P8_16/P8_15 (PRUKIT-ENCODER-00A0) turned"
+echo "back and forth; the count read from sysfs after each stretch (it must be the position):"
+/usr/bin/python3 "$PRUKIT_TOP/drivers/pru_encoder/tests/encoder_demo.py" "$out"
+
 echo
 msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
 	"$out/neopixel-led0.png, $out/logic-uart.png, $out/logic-spi.png, $out/logic.png;" \
 	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
 	"$out/logic.sr"
-msg "pru_pwm: $out/servo.png; VCD: $out/servo.vcd"
+msg "pru_pwm: $out/servo.png; VCD: $out/servo.vcd; pru_encoder: $out/encoder.png"
 msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \
 	"$out/ws281x-strings.gif, $out/ws281x-strings-wave.png; VCD: $out/ws281x-leds.vcd," \

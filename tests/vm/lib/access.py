@@ -15,7 +15,7 @@ RULES = "/etc/udev/rules.d/60-prukit.rules"
 UDEVD = next((p for p in ("/lib/systemd/systemd-udevd", "/usr/lib/systemd/systemd-udevd")
               if os.path.exists(p)), None)
 # prukit's modules: a udev process that does not exit must not be waiting in one
-PRUKIT_MODULES = ("[ws281x]", "[beaglelogic]", "[hub75]", "[pru_pwm]", "[prukit_pru]", "[rpmsg_pru]",
+PRUKIT_MODULES = ("[ws281x]", "[beaglelogic]", "[hub75]", "[pru_pwm]", "[pru_encoder]", "[prukit_pru]", "[rpmsg_pru]",
                   "[pru_test_consumer]", "[prusim_port]")
 # Users with no account: the kernel checks numbers, not names.
 USER = 1000
