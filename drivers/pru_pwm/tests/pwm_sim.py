@@ -18,7 +18,6 @@
 usage: pwm_sim.py PRUSIM FW_DIR PWM_TABLE WORK_DIR"""
 import os
 import random
-import re
 import struct
 import subprocess
 import sys
@@ -26,6 +25,8 @@ import sys
 TOP = os.path.realpath(os.path.join(os.path.dirname(__file__), "../../.."))
 PROTO = os.path.join(TOP, "drivers/pru_pwm/pru_pwm_proto.h")
 TABLE_H = os.path.join(TOP, "drivers/pru_pwm/pru_pwm_table.h")
+sys.path.insert(0, os.path.join(TOP, "tests", "lib"))
+from cdefs import defines  # noqa: E402
 
 # prusim's names of PRU1's R30 bits (tools/prusim: the Black's header pins)
 PRU1_R30 = ["P8_45", "P8_46", "P8_43", "P8_44", "P8_41", "P8_42", "P8_39", "P8_40",
@@ -44,21 +45,6 @@ def check(name, cond, detail=""):
     else:
         failed += 1
     return cond
-
-
-def defines(*paths):
-    out = {}
-    for path in paths:
-        with open(path) as f:
-            for line in f:
-                m = re.match(r"#define\s+(\w+)\s+([^/]+?)\s*(/\*.*)?$", line)
-                if m and "(" not in m.group(1):
-                    expr = re.sub(r"\b(0x[0-9a-fA-F]+|\d+)u\b", r"\1", m.group(2))
-                    try:
-                        out[m.group(1)] = int(eval(expr, {}, dict(out)))
-                    except Exception:
-                        pass
-    return out
 
 
 D = defines(os.path.join(TOP, "include/prukit/pru_ctrl.h"), PROTO, TABLE_H)

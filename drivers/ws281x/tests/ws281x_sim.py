@@ -23,6 +23,8 @@ import sys
 
 TOP = os.environ.get("PRUKIT_TOP") or \
     os.path.realpath(os.path.join(os.path.dirname(__file__), "../../.."))
+sys.path.insert(0, os.path.join(TOP, "tests", "lib"))
+from cdefs import defines  # noqa: E402
 PROTO = os.path.join(TOP, "drivers/ws281x/ws281x_proto.h")
 CTRL_H = os.path.join(TOP, "include/prukit/pru_ctrl.h")
 DDR = 0x80000000
@@ -59,24 +61,7 @@ def info(text):
     print("info: " + text)
 
 
-def defines(path):
-    """The header's integer #defines, by name."""
-    out = {}
-    with open(path) as f:
-        for line in f:
-            m = re.match(r"#define\s+(\w+)\s+([^/]+?)\s*(/\*.*)?$", line)
-            if not m or "(" in m.group(1):
-                continue
-            expr = re.sub(r"\b(0x[0-9a-fA-F]+|\d+)u\b", r"\1", m.group(2))
-            try:
-                out[m.group(1)] = int(eval(expr, {}, dict(out)))
-            except Exception:
-                pass
-    return out
-
-
-D = defines(PROTO)
-D.update(defines(CTRL_H))
+D = defines(PROTO, CTRL_H)
 SLOT = D["WS281X_SLOT_CYCLES"]
 T0H = D["WS281X_T0H_CYCLES"]
 T1H = D["WS281X_T1H_CYCLES"]
