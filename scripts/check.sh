@@ -57,14 +57,14 @@ qemu_check() {
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
-step harness 50 harness_check				# [12 + 36 + 6]
-step checkpatch 88 scripts/checkpatch.sh		# [93], one per C file
-step kernels 16 scripts/kernels.sh 5.10 6.1 6.12	# [18]: armmp and board builds
+step harness 55 harness_check				# [59]
+step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
+step kernels 19 scripts/kernels.sh 5.10 6.1 6.12	# [21]: armmp and board builds
 step qemu 1 qemu_check					# [1]
-step firmware 90 firmware_check				# [96], grows with the images
-step overlays 770 scripts/overlays.sh --check		# [791]
-step dkms 22 scripts/dkms-test.sh			# [24]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
-step deb 50 scripts/deb.sh --check			# [53]: 4 packages, lintian
+step firmware 185 firmware_check				# [193], grows with the images
+step overlays 950 scripts/overlays.sh --check		# [978]
+step dkms 25 scripts/dkms-test.sh			# [27]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
+step deb 58 scripts/deb.sh --check			# [62]: 4 packages, lintian
 step tool 33 tests/tool/test-prukit.py			# [35]: the prukit command on the host
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
@@ -79,7 +79,7 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 3150 scripts/vm.sh test "5.10 6.1 6.12"	# [3290], 3 kernels, one boot each (and a second for 71)
+step vmtest 3650 scripts/vm.sh test "5.10 6.1 6.12"	# [3793], 3 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).
