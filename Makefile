@@ -6,7 +6,8 @@
 # else.  Entry points (stable names):
 #   make / make modules   modules against KDIR (default: the running kernel)
 #   make install          modules, PRU firmware, overlays, udev rule, uapi headers,
-#                         servers (beaglelogic-tcpd) and their systemd units
+#                         servers (beaglelogic-tcpd, prukit-pixeld) and their systemd
+#                         units, prukit-pixeld's configuration (kept if there is one)
 #   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse),
 #                         as Debian ships them and with the kernel's own PRU drivers
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
@@ -42,6 +43,7 @@ SYSTEMD_UNIT_DIR ?= /lib/systemd/system
 BIN_DIR ?= /usr/bin
 TOOL_LIB_DIR ?= /usr/lib/prukit
 DATA_DIR ?= /usr/share/prukit
+SYSCONF_DIR ?= /etc
 
 BUILD := $(CURDIR)/out
 SCRIPTS := $(CURDIR)/scripts
@@ -132,8 +134,10 @@ headers_install:
 	install -m 0644 $(CURDIR)/include/uapi/prukit/*.h $(DESTDIR)$(INCLUDE_DIR)/prukit/
 
 # Daemons for the board, and their systemd units (not enabled: that is the
-# user's choice).  drivers/beaglelogic/server: the BeagleLogic TCP server.
-SERVERS := drivers/beaglelogic/server/beaglelogic-tcpd
+# user's choice).  drivers/beaglelogic/server: the BeagleLogic TCP server;
+# tools/pixeld: E1.31, OPC and DDP onto the LED devices, with its
+# configuration in /etc/prukit (a file already there is the user's: kept).
+SERVERS := drivers/beaglelogic/server/beaglelogic-tcpd tools/pixeld/prukit-pixeld
 
 server_install:
 	install -d $(DESTDIR)$(SBIN_DIR) $(DESTDIR)$(SYSTEMD_UNIT_DIR)
@@ -144,6 +148,11 @@ server_install:
 		sed 's|@SBINDIR@|$(SBIN_DIR)|' $$s.service \
 			>$(DESTDIR)$(SYSTEMD_UNIT_DIR)/$${s##*/}.service || exit 1; \
 	done
+	@if [ -e $(DESTDIR)$(SYSCONF_DIR)/prukit/pixeld.conf ]; then \
+		echo "  KEEP    $(SYSCONF_DIR)/prukit/pixeld.conf"; \
+	else \
+		install -D -m 0644 tools/pixeld/pixeld.conf $(DESTDIR)$(SYSCONF_DIR)/prukit/pixeld.conf; \
+	fi
 
 # The prukit command (tools/prukit): /usr/bin/prukit, its Python package in
 # /usr/lib/prukit, and the pin table it reads in /usr/share/prukit.

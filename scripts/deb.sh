@@ -6,8 +6,9 @@
 #                    dkms_source), depmod.d and modprobe.d
 #   prukit-firmware  the PRU firmware users run, prebuilt
 #   prukit-overlays  the device-tree overlays, prebuilt, in /lib/firmware
-#   prukit-tools     udev rules (/lib/udev/rules.d), beaglelogic-tcpd with
-#                    its systemd unit and man page, the ioctl headers
+#   prukit-tools     udev rules (/lib/udev/rules.d), beaglelogic-tcpd and
+#                    prukit-pixeld with their systemd units and man pages,
+#                    pixeld's configuration (a conffile), the ioctl headers
 # all "Architecture: all", built with debhelper and dh-dkms (bookworm's) from
 # packaging/debian and a staged tree (out/deb/build).  The version is
 # dkms.conf's PACKAGE_VERSION: debian/changelog is generated from it.
@@ -47,6 +48,7 @@ done
 install -D -m 0644 "$PRUKIT_TOP/drivers/beaglelogic/server/beaglelogic-tcpd.8" \
 	"$work/root/man/beaglelogic-tcpd.8"
 install -D -m 0644 "$PRUKIT_TOP/tools/prukit/prukit.1" "$work/root/man/prukit.1"
+install -D -m 0644 "$PRUKIT_TOP/tools/pixeld/prukit-pixeld.8" "$work/root/man/prukit-pixeld.8"
 
 cp -a "$PRUKIT_TOP/packaging/debian" "$work/debian"
 maint=$(git -C "$PRUKIT_TOP" log -1 --format='%an <%ae>')
@@ -137,6 +139,16 @@ has prukit-tools "^/lib/udev/rules.d/60-prukit.rules$" "udev rules in /lib/udev/
 has prukit-tools "^/usr/sbin/beaglelogic-tcpd$" "/usr/sbin/beaglelogic-tcpd"
 has prukit-tools "^/lib/systemd/system/beaglelogic-tcpd.service$" "its systemd unit"
 has prukit-tools "^/usr/share/man/man8/beaglelogic-tcpd.8.gz$" "its man page"
+has prukit-tools "^/usr/sbin/prukit-pixeld$" "/usr/sbin/prukit-pixeld"
+has prukit-tools "^/lib/systemd/system/prukit-pixeld.service$" "its systemd unit"
+has prukit-tools "^/usr/share/man/man8/prukit-pixeld.8.gz$" "its man page"
+has prukit-tools "^/etc/prukit/pixeld.conf$" "its configuration in /etc/prukit"
+if dpkg-deb --ctrl-tarfile "$out/prukit-tools_${ver}_all.deb" | tar -xO ./conffiles 2>/dev/null |
+	grep -qx /etc/prukit/pixeld.conf; then
+	pass "prukit-tools: /etc/prukit/pixeld.conf is a conffile (an upgrade keeps the user's)"
+else
+	fail "prukit-tools: /etc/prukit/pixeld.conf is a conffile (an upgrade keeps the user's)"
+fi
 has prukit-tools "^/usr/include/prukit/ws281x.h$" "the ioctl headers"
 has prukit-tools "^/usr/bin/prukit$" "/usr/bin/prukit"
 has prukit-tools "^/usr/lib/prukit/prukit_tool/status.py$" "the prukit command's package in /usr/lib/prukit"
@@ -150,9 +162,9 @@ fi
 # shellcheck disable=SC2016 # the postinst's own "$g", literally
 if dpkg-deb -I "$out/prukit-tools_${ver}_all.deb" postinst | grep -q 'addgroup --quiet --system "\$g"' &&
    ! dpkg-deb -I "$out/prukit-tools_${ver}_all.deb" postinst | grep -q 'systemctl.*enable'; then
-	pass "prukit-tools: postinst creates the rules' groups; beaglelogic-tcpd is not enabled"
+	pass "prukit-tools: postinst creates the rules' groups; beaglelogic-tcpd and prukit-pixeld are not enabled"
 else
-	fail "prukit-tools: postinst creates the rules' groups; beaglelogic-tcpd is not enabled"
+	fail "prukit-tools: postinst creates the rules' groups; beaglelogic-tcpd and prukit-pixeld are not enabled"
 fi
 
 # --- lintian ----------------------------------------------------------------

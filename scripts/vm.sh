@@ -249,6 +249,11 @@ make_initrd() {
 		die "make udev_install server_install tool_install modprobe_install failed"
 	# Clients a user runs on the board, as shipped
 	install -D -m 0755 "$PRUKIT_TOP/firmware/rpmsg-neopixel/rainbow.py" "$stage/prukit/bin/rainbow.py"
+	# Senders for prukit-pixeld (tests/vm/cases/94-pixeld): PyPI's sacn, a
+	# wheel the guest imports as it is, and ours for OPC and DDP
+	install -m 0644 "$("$PRUKIT_TOP/scripts/sacn-wheel.sh")" "$stage/prukit/lib/" ||
+		die "no sacn wheel (scripts/sacn-wheel.sh)"
+	install -m 0644 "$PRUKIT_TOP/tools/pixeld/tests/pixel_send.py" "$stage/prukit/lib/"
 	{
 		echo "PRUKIT_MODE=$mode"
 		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
