@@ -38,17 +38,23 @@
 #   - pru_encoder: PRU cycles per sample and decoding path, the highest
 #     edge rate counted without a miss, the event latency (prusim, the real
 #     firmware; drivers/pru_encoder/tests/bench.sh)
+#   - prukit-pixeld: the parse + map instructions per pixel of an E1.31
+#     universe, an OPC message and a DDP packet (callgrind, in-process: the
+#     CPython interpreter's on the host, not a board's), the universes per
+#     CPU-second the daemon handles on one host core over loopback and the
+#     fraction of such a core 48 strings x 600 pixels at the wire rate need
+#     (tools/pixeld/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 #
 # Usage: bench.sh [PART...] (make bench [PARTS="..."]): the parts named, in
 # the order above, or all of them: prusim rpmsg-fw ws281x beaglelogic hub75 pwm
-# encoder vm stress.  Whatever the parts, the host tools and the firmware are built
-# first (a fresh clone needs nothing else).
+# encoder pixeld vm stress.  Whatever the parts, the host tools and the
+# firmware are built first (a fresh clone needs nothing else).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
-ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder vm stress"
+ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder pixeld vm stress"
 for p in "$@"; do
 	[[ " $ALL_PARTS " == *" $p "* ]] || die "bench: no part '$p' (parts: $ALL_PARTS)"
 done
@@ -96,6 +102,12 @@ if want encoder; then
 		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_encoder-bench.log" || true
 		  die "drivers/pru_encoder/tests/bench.sh failed; see out/pru_encoder-bench.log"; }
 	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_encoder-bench.log"
+fi
+if want pixeld; then
+	"$PRUKIT_TOP/tools/pixeld/tests/bench.sh" >"$PRUKIT_TOP/out/pixeld-bench.log" 2>&1 ||
+		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pixeld-bench.log" || true
+		  die "tools/pixeld/tests/bench.sh failed; see out/pixeld-bench.log"; }
+	grep -E '^BENCH:' "$PRUKIT_TOP/out/pixeld-bench.log"
 fi
 if want vm; then
 	# The simulator's speed, side by side: the same firmware (blinky on both

@@ -29,6 +29,11 @@
 #    encoder turned back and forth on PRU0's inputs, its count read through
 #    sysfs after each stretch and drawn against the encoder's position
 #    (drivers/pru_encoder/tests/encoder_demo.py: encoder.png);
+#  - prukit-pixeld (tests/vm/demo/pixels): E1.31 from PyPI's sacn in the
+#    guest onto the four strings of ws281x-mix, then, after a reload, onto
+#    the 64x32 panel over 12 synchronized universes, decoded from the pins
+#    (tools/ws281x-show.py: pixeld-strings.gif, pixeld-strings.png;
+#    tools/pixeld/tests/pixeld_demo.py: pixeld-panel.gif, pixeld-panel.png);
 #  - the PRU Cookbook's NeoPixel example (firmware/rpmsg-neopixel) and
 #    prukit's rainbow client through /dev/rpmsg_pru30 (tests/vm/demo/neopixel),
 #    on the kernel's pru_rproc with the kick prukit_pru gives it
@@ -159,12 +164,29 @@ echo "back and forth; the count read from sysfs after each stretch (it must be t
 /usr/bin/python3 "$PRUKIT_TOP/drivers/pru_encoder/tests/encoder_demo.py" "$out"
 
 echo
+echo "prukit-pixeld: E1.31 (sACN) from PyPI's sacn in the guest, as xLights would send it, onto the"
+echo "four strings of ws281x-mix (universe 1), decoded from the pins (P9_30 by sigrok's"
+echo "rgb_led_ws281x, the others by ws281x-show.py's decoder; every frame must be what was sent):"
+"$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/pixeld-strings.bin" \
+	--events "$out/pixeld-strings.events" --vcd "$out/pixeld-strings.vcd"
+/usr/bin/python3 "$PRUKIT_TOP/tools/ws281x-show.py" "$out/pixeld-strings.vcd" --pin P9_30:grb:6 \
+	--pin gpio1_12:grbw:4 --pin P8_42:rgb:5 --pin gpio2_2:brg:3 \
+	--strip "$out/pixeld-strings.png" --gif "$out/pixeld-strings.gif" --delay 120 \
+	--expect "$out/pixeld-strings.sent"
+echo
+echo "... then, after a reload, onto the 64x32 panel: 8 frames of 12 universes each, released at"
+echo "once by a sync packet, decoded from the pins (every pixel must be what was sent):"
+/usr/bin/python3 "$PRUKIT_TOP/tools/pixeld/tests/pixeld_demo.py" "$out/pixeld" "$out"
+
+echo
 msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
 	"$out/neopixel-led0.png, $out/logic-uart.png, $out/logic-spi.png, $out/logic.png;" \
 	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
 	"$out/logic.sr"
 msg "pru_pwm: $out/servo.png; VCD: $out/servo.vcd; pru_encoder: $out/encoder.png"
 msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png"
+msg "prukit-pixeld: $out/pixeld-strings.gif, $out/pixeld-strings.png, $out/pixeld-panel.gif," \
+	"$out/pixeld-panel.png; VCD: $out/pixeld-strings.vcd"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \
 	"$out/ws281x-strings.gif, $out/ws281x-strings-wave.png; VCD: $out/ws281x-leds.vcd," \
 	"$out/ws281x-strings.vcd"

@@ -1,0 +1,425 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-only
+"""Host checks of prukit-pixeld (tools/pixeld/prukit-pixeld): its mapping
+and protocol rules, in the process with a clock of our own (Pixeld fed
+packets built by pixel_send.py from the standards), and the daemon as a
+program (its command line, signals and sockets on loopback).  The VM test
+94-pixeld runs it on the devices with real senders; fuzz.py throws bad
+input at it.  Prints PASS:/FAIL: lines; exits 1 if any failed."""
+import importlib.machinery
+import importlib.util
+import os
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.realpath(__file__))
+DAEMON = os.environ.get("PIXELD", os.path.join(HERE, "..", "prukit-pixeld"))
+sys.path.insert(0, HERE)
+import pixel_send as ps  # noqa: E402
+
+loader = importlib.machinery.SourceFileLoader("pixeld", DAEMON)
+spec = importlib.util.spec_from_loader("pixeld", loader)
+pixeld = importlib.util.module_from_spec(spec)
+loader.exec_module(pixeld)
+
+failed = 0
+TMP = tempfile.mkdtemp(prefix="pixeld-check.")
+
+
+def check(name, cond, detail=""):
+    global failed
+    print(("PASS: " if cond else "FAIL: ") + "pixeld: " + name +
+          ("" if cond or detail == "" else ": " + str(detail)), flush=True)
+    failed += not cond
+    return cond
+
+
+class Clock:
+    def __init__(self):
+        self.t = 1000.0
+
+    def __call__(self):
+        return self.t
+
+
+def conf(text, name="t.conf"):
+    path = os.path.join(TMP, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def make(text):
+    """A Pixeld on TEXT's configuration, its clock, and reader of the
+    frames each file output got."""
+    clock = Clock()
+    px = pixeld.Pixeld(pixeld.Config(conf(text)), clock=clock)
+    return px, clock
+
+
+def frames(name, size):
+    """Every frame a file output (append) got."""
+    try:
+        with open(os.path.join(TMP, name), "rb") as f:
+            data = f.read()
+    except OSError:
+        return []
+    return [data[i:i + size] for i in range(0, len(data), size)]
+
+
+def fresh(*names):
+    for n in names:
+        try:
+            os.unlink(os.path.join(TMP, n))
+        except OSError:
+            pass
+
+
+def pattern(n, seed=0):
+    return bytes((i * 7 + seed * 13 + i // 256) % 256 for i in range(n))
+
+
+# --- configuration errors --------------------------------------------------------------------
+BAD = [("output a file x 10\nmap a e131 universe 0\n", ":2: map a e131: universe is a whole "
+        "number from 1 to 63999, not '0'"),
+       ("output a file x 10\nmap a e131 channel 513\n", ":2: map a e131: channel is a whole "
+        "number from 1 to 512, not '513'"),
+       ("output a file x 10\nmap a opc channel 3 at\n", ":2: map a opc: keys and values go in "
+        "pairs"),
+       ("output a file x 10\nmap a ddp offset -1\n", ":2: map a ddp: offset is a whole number"),
+       ("output a file x 10\nmap a e131 layout zigzag\n", ":2: map a e131: layout is "
+        "contiguous"),
+       ("output a file x 10\nmap b opc\n", ":2: map: no output 'b' defined above"),
+       ("output a file x 10\noutput a file y 10\nmap a opc\n", ":2: output a is defined twice"),
+       ("output a ws281x /dev/a /dev/b\nmap a opc\n", ":1: output a: 'ws281x /dev/a /dev/b' is not"),
+       ("output a file x 10\nmap a opc\nopc maybe\n", ":3: opc is on or off, not 'maybe'"),
+       ("output a file x 10\nmap a opc\nopc-port 70000\n", ":3: opc-port is a whole number "
+        "from 1 to 65535"),
+       ("output a file x 10\nmap a opc\nframe-wait 99\n", ":3: frame-wait is seconds"),
+       ("output a file x 10\nmap a opc\nbrightness 50\n", ":3: unknown keyword 'brightness'"),
+       ("output a file x 10\n", ": no map line: nothing would be shown")]
+for text, want in BAD:
+    try:
+        pixeld.Config(conf(text))
+        got = "accepted"
+    except pixeld.ConfigError as e:
+        got = str(e)
+    check("a configuration with %r is refused: %r" % (text.splitlines()[-1], want),
+          want in got and got.startswith(os.path.join(TMP, "t.conf")), got)
+try:
+    pixeld.Config(os.path.join(TMP, "none.conf"))
+    got = ""
+except pixeld.ConfigError as e:
+    got = str(e)
+check("a missing configuration file: named, with the reason", "none.conf: No such file" in got,
+      got)
+try:
+    c = pixeld.Config(os.path.join(HERE, "..", "pixeld.conf"))
+    check("the installed configuration (tools/pixeld/pixeld.conf) is valid: /dev/ws281x0 from "
+          "universe 1, OPC channel 1 and DDP", [(m.proto, m.output.where) for m in c.maps] ==
+          [("e131", "/dev/ws281x0"), ("opc", "/dev/ws281x0"), ("ddp", "/dev/ws281x0")])
+except pixeld.ConfigError as e:
+    check("the installed configuration (tools/pixeld/pixeld.conf) is valid", False, e)
+
+# --- E1.31 layouts ---------------------------------------------------------------------------
+fresh("p")
+px, clock = make("output p file %s/p 2048 append\nmap p e131 universe 7\n" % TMP)
+pic = pattern(6144)
+for k in range(12):
+    px.feed_e131(ps.e131_data(7 + k, pic[k * 512:(k + 1) * 512]))
+got = frames("p", 6144)
+check("contiguous: a 64x32 picture over universes 7-18 (12 x 512 channels) is one frame, "
+      "exactly; pixels 170, 341 ... straddle two universes", got == [pic], len(got))
+check("universes 7-18 are mapped, no other", sorted(px.universes) == list(range(7, 19)))
+px.feed_e131(ps.e131_data(19, bytes(512)))
+px.feed_e131(ps.e131_data(6, bytes(512)))
+check("universes 6 and 19: ignored (e131.ignored.universe 2), nothing kept for them",
+      px.stats.get("e131.ignored.universe") == 2 and sorted(px.universes) == list(range(7, 19)))
+
+fresh("q")
+px, clock = make("output q file %s/q 400 append\nmap q e131 universe 1 layout pixels\n" % TMP)
+u = [pattern(512, k) for k in range(3)]
+for k in range(3):
+    px.feed_e131(ps.e131_data(1 + k, u[k]))
+want = u[0][:510] + u[1][:510] + u[2][:180]
+check("layout pixels (RGB): 170 pixels per universe, channels 511-512 unused, 400 pixels over "
+      "universes 1-3", frames("q", 1200) == [want])
+
+fresh("r")
+px, clock = make("output r file %s/r 300 rgbw append\n"
+                 "map r e131 universe 1 channel 4 layout pixels\n" % TMP)
+for k in range(3):
+    px.feed_e131(ps.e131_data(1 + k, u[k]))
+want = u[0][3:3 + 508] + u[1][:512] + u[2][:(300 - 127 - 128) * 4]
+check("layout pixels (RGBW), from channel 4: 127 pixels in universe 1 (channels 4-511), "
+      "128 in each next one from channel 1", frames("r", 1200) == [want])
+
+fresh("s")
+px, clock = make("output s file %s/s 20 rgbw append\n"
+                 "map s e131 universe 1 channel 500 pixels 5 at 10\n" % TMP)
+px.feed_e131(ps.e131_data(1, pattern(512)))
+check("a map across two universes writes nothing until both came",
+      frames("s", 80) == [], frames("s", 80))
+px.feed_e131(ps.e131_data(2, pattern(512, 1)))
+f = frames("s", 80)
+want = bytes(40) + pattern(512)[499:] + pattern(512, 1)[:7] + bytes(20)
+check("contiguous RGBW from channel 500: 13 + 7 channels, pixel 13 straddling, at pixel 10 "
+      "of 20", f == [want], f)
+
+# --- sources, priority, sequence, sync ----------------------------------------------------
+fresh("a")
+px, clock = make("output a file %s/a 4 append\nmap a e131 universe 1\n" % TMP)
+A, B = b"A" * 16, b"B" * 16
+
+
+def last():
+    f = frames("a", 12)
+    return f[-1][0] if f else None
+
+
+px.feed_e131(ps.e131_data(1, [1] * 12, cid=A, seq=0, priority=100))
+px.feed_e131(ps.e131_data(1, [2] * 12, cid=B, seq=0, priority=150))
+px.feed_e131(ps.e131_data(1, [3] * 12, cid=A, seq=1, priority=100))
+check("priority: 150 wins over 100 (the lower's new data not shown)", last() == 2 and
+      px.stats.get("e131.lower_priority") == 1, frames("a", 12))
+px.feed_e131(ps.e131_data(1, [4] * 12, cid=B, seq=1, priority=150))
+clock.t += 2.4
+px.feed_e131(ps.e131_data(1, [5] * 12, cid=A, seq=2, priority=100))
+px.tick()
+check("2.4 s after the higher's last packet: still the higher's", last() == 4)
+clock.t += 0.2
+px.tick()
+check("2.6 s: the higher timed out, the lower's last data shown at once", last() == 5 and
+      px.stats.get("e131.timeouts") == 1)
+px.feed_e131(ps.e131_data(1, [6] * 12, cid=B, seq=2, priority=150))
+px.feed_e131(ps.e131_data(1, [7] * 12, cid=B, seq=3, priority=150, options=0x40))
+check("stream terminated (its data not shown): the lower takes over at once", last() == 5 and
+      px.stats.get("e131.terminated") == 1, [f[0] for f in frames("a", 12)])
+C = b"C" * 16
+px.feed_e131(ps.e131_data(1, [8] * 12, cid=C, seq=0, priority=100))
+check("equal priority: the source shown first stays", last() == 5)
+px.feed_e131(ps.e131_data(1, [20] * 12, cid=b"D" * 16, seq=0, priority=150))
+px.feed_e131(ps.e131_data(1, [21] * 12, cid=b"D" * 16, seq=1, priority=150, options=0x40))
+check("the winner gone, two of equal priority left: the one known longest shown",
+      [f[0] for f in frames("a", 12)][-2:] == [20, 5])
+px.feed_e131(ps.e131_data(1, [9] * 12, cid=A, seq=3, priority=100))
+px.feed_e131(ps.e131_data(1, [10] * 12, cid=A, seq=2, priority=100))
+px.feed_e131(ps.e131_data(1, [11] * 12, cid=A, seq=240, priority=100))
+px.feed_e131(ps.e131_data(1, [12] * 12, cid=A, seq=3 + 236, priority=100))
+check("sequence: one back is late (dropped), 20 or more back is a restart (taken)",
+      [f[0] for f in frames("a", 12)][-2:] == [9, 12] and
+      px.stats.get("e131.dropped.late") == 2, [f[0] for f in frames("a", 12)])
+check("sequence 255 -> 0 wraps", (px.feed_e131(ps.e131_data(1, [13] * 12, cid=A, seq=255)),
+                                  px.feed_e131(ps.e131_data(1, [14] * 12, cid=A, seq=0)),
+                                  last())[-1] == 14)
+
+fresh("m")
+px, clock = make("output m file %s/m 4 append\nmap m e131 universe 1\nmax-sources 3\n" % TMP)
+for k in range(40):
+    px.feed_e131(ps.e131_data(1, [k] * 12, cid=b"%16d" % k))
+check("max-sources 3: 40 sources, 3 kept, 37 dropped (e131.dropped.sources_full)",
+      len(px.universes[1].sources) == 3 and px.stats.get("e131.dropped.sources_full") == 37)
+clock.t += 3
+px.tick()
+px.feed_e131(ps.e131_data(1, [99] * 12, cid=b"%16d" % 99))
+check("once they timed out, a new source is taken", frames("m", 12)[-1][0] == 99)
+
+fresh("y")
+px, clock = make("output y file %s/y 400 append\nmap y e131 universe 1\n" % TMP)
+px.feed_e131(ps.e131_data(1, [1] * 512, sync=9))
+px.feed_e131(ps.e131_data(2, [2] * 512, sync=9))
+px.feed_e131(ps.e131_data(3, [3] * 176, sync=9))
+check("synchronized universes: nothing before the sync packet", frames("y", 1200) == [])
+px.feed_e131(ps.e131_sync(8))
+check("a sync packet for another universe: ignored", frames("y", 1200) == [] and
+      px.stats.get("e131.ignored.sync") == 1)
+px.feed_e131(ps.e131_sync(9))
+check("the sync packet: all three universes in one frame",
+      frames("y", 1200) == [bytes([1] * 512 + [2] * 512 + [3] * 176)])
+px.feed_e131(ps.e131_sync(9, seq=0))
+check("a repeated sync (same sequence) changes nothing", len(frames("y", 1200)) == 1)
+for step in (1, 2, 3):		# the source sends on, the sync packets stopped
+    clock.t += 1.3
+    for k, n in ((1, 512), (2, 512), (3, 176)):
+        px.feed_e131(ps.e131_data(k, [step * 10 + k] * n, sync=9, seq=step))
+    px.tick()
+    if step == 2:
+        check("data waiting 1.3 s for a sync packet: not shown yet",
+              len(frames("y", 1200)) == 1)
+check("data waiting 2.6 s for a sync packet (longer than the source timeout): shown "
+      "(e131.sync_timeouts 1), the newest", px.stats.get("e131.sync_timeouts") == 1 and
+      frames("y", 1200)[1:] == [bytes([31] * 512 + [32] * 512 + [33] * 176)])
+
+fresh("z")
+px, clock = make("output z file %s/z 400 append\nmap z e131 universe 1\n" % TMP)
+px.feed_e131(ps.e131_data(1, [1] * 512))
+px.feed_e131(ps.e131_data(2, [2] * 512))
+clock.t += 0.04
+px.tick()
+check("unsynchronized: 2 of 3 universes, 40 ms: nothing yet (frame-wait 50 ms)",
+      frames("z", 1200) == [])
+px.feed_e131(ps.e131_data(3, [3] * 176))
+check("the third: one frame", len(frames("z", 1200)) == 1)
+
+# --- OPC ------------------------------------------------------------------------------------------
+fresh("o", "o2")
+px, clock = make("output o file %s/o 10 rgbw append\noutput o2 file %s/o2 4 append\n"
+                 "map o opc channel 1 pixels 4 at 2\nmap o opc channel 2 at 6\n"
+                 "map o2 opc channel 2\nmap o ddp\n" % (TMP, TMP))
+px.feed_ddp(ps.ddp_packets(b"\xff" * 40)[0])
+px.feed_opc(ps.opc_message(1, pattern(15)))
+check("OPC channel 1: 4 pixels at 2 of an RGBW output (W off there, the rest as DDP left "
+      "it), the 5th pixel sent ignored", frames("o", 40)[1:] == [
+          b"\xff" * 8 + b"".join(pattern(15)[i:i + 3] + b"\0" for i in range(0, 12, 3)) +
+          b"\xff" * 16])
+px.feed_opc(ps.opc_message(0, bytes([9]) * 13))
+f = frames("o", 40)[-1]
+check("channel 0: every map (both outputs written); a partial pixel ignored",
+      len(frames("o", 40)) == 3 and frames("o2", 12) == [bytes([9]) * 12] and
+      f[:8] == b"\xff" * 8 and f[8:24] == bytes([9, 9, 9, 0]) * 4 and
+      f[24:] == bytes([9, 9, 9, 0]) * 4, f)
+px.feed_opc(ps.opc_message(1, bytes(3), command=0xFF))
+px.feed_opc(ps.opc_message(1, bytes(3), command=7))
+px.feed_opc(ps.opc_message(3, bytes(3)))
+px.feed_opc(ps.opc_message(1, bytes(3))[:-1])
+px.feed_opc(b"\x01\x00")
+c = px.stats
+check("OPC: system exclusive, an unknown command, an unmapped channel ignored; a short "
+      "message and a truncated header dropped; nothing written",
+      (c.get("opc.ignored.sysex"), c.get("opc.ignored.command"), c.get("opc.ignored.channel"),
+       c.get("opc.dropped.length"), c.get("opc.dropped.truncated"), len(frames("o", 40))) ==
+      (1, 1, 1, 1, 1, 3))
+
+# --- DDP ------------------------------------------------------------------------------------------
+fresh("d")
+px, clock = make("output d file %s/d 1000 append\nmap d ddp offset 300 pixels 900 at 100\n"
+                 % TMP)
+data = pattern(3000)
+pk = ps.ddp_packets(data, size=1440)
+px.feed_ddp(pk[0])
+px.feed_ddp(pk[1])
+check("DDP: nothing before the push", frames("d", 3000) == [])
+px.feed_ddp(pk[2])
+check("DDP, 3 packets, push on the last: bytes 300-2999 at pixel 100, once",
+      frames("d", 3000) == [bytes(300) + data[300:3000]], len(frames("d", 3000)))
+tc = bytearray(ps.ddp_packets(bytes([5]) * 30, offset=300)[0])
+tc[0] |= 0x10
+tc[10:10] = b"\0\0\0\0"		# a timecode
+px.feed_ddp(bytes(tc))
+check("a timecode (14-byte header): the data after it", frames("d", 3000)[-1][300:330] ==
+      bytes([5]) * 30)
+q = bytearray(ps.ddp_packets(bytes(6))[0])
+q[0] |= 0x02
+px.feed_ddp(bytes(q))
+v = bytearray(ps.ddp_packets(bytes(6))[0])
+v[0] = 0x81
+px.feed_ddp(bytes(v))
+px.feed_ddp(ps.ddp_packets(bytes(6), dest=7)[0])
+px.feed_ddp(ps.ddp_packets(bytes(6), dtype=0x2B)[0])
+px.feed_ddp(ps.ddp_packets(bytes(60))[0][:-1])
+c = px.stats
+check("DDP: a query, another destination, another data type ignored; version 2 and a "
+      "truncated packet dropped", (c.get("ddp.ignored.query"), c.get("ddp.ignored.destination"),
+                                   c.get("ddp.ignored.data_type"), c.get("ddp.dropped.version"),
+                                   c.get("ddp.dropped.truncated")) == (1, 1, 1, 1, 1))
+
+# --- an output that comes later ---------------------------------------------------------------
+later = os.path.join(TMP, "later")
+px, clock = make("output l file %s/f 4 append\nmap l opc\n" % later)
+px.feed_opc(ps.opc_message(1, bytes([1]) * 12))
+check("an output not there: nothing mapped, the message ignored", not px.opc_maps and
+      px.stats.get("opc.ignored.channel") == 1)
+os.mkdir(later)
+clock.t += 4
+px.tick()
+check("4 s later (retry every 5 s): not yet", not px.opc_maps)
+clock.t += 1.1
+px.tick()
+px.feed_opc(ps.opc_message(1, bytes([2]) * 12))
+check("5 s: opened, mapped, written", frames("later/f", 12) == [bytes([2]) * 12])
+
+# --- the program -----------------------------------------------------------------------------------
+
+
+def free_port(kind=socket.SOCK_DGRAM):
+    with socket.socket(socket.AF_INET, kind) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+r = subprocess.run([sys.executable, DAEMON, "--help"], capture_output=True, text=True)
+check("--help names the configuration file /etc/prukit/pixeld.conf", r.returncode == 0 and
+      "/etc/prukit/pixeld.conf" in r.stdout, r.stdout[-200:])
+r = subprocess.run([sys.executable, DAEMON, "--config", conf("output a file x 10\n", "b.conf")],
+                   capture_output=True, text=True)
+check("a configuration with errors: exit 2, the errors, no traceback", r.returncode == 2 and
+      "b.conf: no map line" in r.stderr and "Traceback" not in r.stderr, r.stderr)
+ports = dict(e=free_port(), o=free_port(socket.SOCK_STREAM), d=free_port())
+base = ("output f file %s/run 4 append\nstats-file %s/stats\nlisten 127.0.0.1\n"
+        "e131-port %d\nopc-port %d\nddp-port %d\n" % (TMP, TMP, ports["e"], ports["o"],
+                                                       ports["d"]))
+path = conf(base + "map f opc channel 1\n", "run.conf")
+r = subprocess.run([sys.executable, DAEMON, "--config", path, "--check"], capture_output=True,
+                   text=True)
+check("--check: the maps, exit 0", r.returncode == 0 and "opc channel 1 -> output f" in r.stdout,
+      r.stdout + r.stderr)
+fresh("run")
+p = subprocess.Popen([sys.executable, DAEMON, "--config", path], stderr=subprocess.PIPE,
+                     text=True)
+log = []
+while True:
+    line = p.stderr.readline()
+    log.append(line)
+    if not line or "listening" in line:
+        break
+check("it starts and listens on 127.0.0.1", "listening on 127.0.0.1" in log[-1], log)
+opc = ps.OpcClient(port=ports["o"])
+opc.put_pixels(1, bytes([1]) * 12)
+time.sleep(0.3)
+check("OPC on TCP: the frame", frames("run", 12) == [bytes([1]) * 12], frames("run", 12))
+with open(path, "a") as f:
+    f.write("map f ddp offset x\n")
+p.send_signal(signal.SIGHUP)
+time.sleep(0.5)
+opc.put_pixels(1, bytes([2]) * 12)
+time.sleep(0.3)
+check("SIGHUP with an error: the running configuration stays (the connection too)",
+      frames("run", 12)[-1:] == [bytes([2]) * 12])
+conf(base + "map f ddp\n", "run.conf")
+p.send_signal(signal.SIGHUP)
+time.sleep(0.5)
+d = ps.DdpSender(port=ports["d"])
+d.frame(bytes([3]) * 12)
+time.sleep(0.3)
+check("SIGHUP with a good one: DDP mapped now", frames("run", 12)[-1:] == [bytes([3]) * 12])
+u = ps.OpcClient(port=ports["o"], udp=True)
+u.put_pixels(1, bytes([4]) * 12)
+time.sleep(0.3)
+check("... and OPC no longer", frames("run", 12)[-1:] == [bytes([3]) * 12])
+p.send_signal(signal.SIGUSR1)
+time.sleep(0.5)
+try:
+    with open(os.path.join(TMP, "stats")) as f:
+        stats = dict(ln.split() for ln in f)
+except OSError:
+    stats = {}
+check("SIGUSR1: the counters in the stats file", stats.get("ddp.accepted") == "1" and
+      stats.get("opc.ignored.channel") == "1" and stats.get("output.f.frames") == "3", stats)
+q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=True, text=True,
+                   timeout=30)
+check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
+      "cannot listen" in q.stderr and "Address already in use" in q.stderr, q.stderr)
+p.send_signal(signal.SIGTERM)
+try:
+    rc = p.wait(timeout=10)
+except subprocess.TimeoutExpired:
+    p.kill()
+    rc = None
+rest = p.stderr.read()
+check("SIGTERM: exit 0, no traceback", rc == 0 and "Traceback" not in "".join(log) + rest,
+      rest[-300:])
+sys.exit(1 if failed else 0)
