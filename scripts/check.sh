@@ -64,9 +64,9 @@ step qemu 1 qemu_check					# [1]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 25 scripts/dkms-test.sh			# [27]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
-step deb 58 scripts/deb.sh --check			# [62]: 4 packages, lintian
+step deb 63 scripts/deb.sh --check			# [67]: 4 packages, lintian
 step tool 33 tests/tool/test-prukit.py			# [35]: the prukit command on the host
-step pixeld 60 tools/pixeld/tests/check.sh		# [64]: prukit-pixeld on the host, fuzzed
+step pixeld 105 tools/pixeld/tests/check.sh		# [115]: prukit-pixeld on the host, fuzzed
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
 # Each driver's own checks, drivers/<driver>/tests/check.sh, with the
@@ -80,7 +80,7 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 3650 scripts/vm.sh test "5.10 6.1 6.12"	# [3793], 3 kernels, one boot each (and a second for 71)
+step vmtest 3950 scripts/vm.sh test "5.10 6.1 6.12"	# [4090], 3 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).
