@@ -100,8 +100,10 @@ def terminal(levels, planes):
         print(line + "\033[0m")
 
 
-def show(art, outdir):
-    from PIL import Image
+def decode_pictures(art, who="hub75_demo"):
+    """Every picture of ART/hub75.json decoded from its trace and checked
+    (check_picture): [(its entry, its levels or None, its checks failed)];
+    each failed check printed."""
     with open(os.path.join(art, "hub75.json")) as f:
         pics = json.load(f)
     fails = []
@@ -109,16 +111,25 @@ def show(art, outdir):
     def check(name, cond, detail=""):
         if not cond:
             fails.append(name)
-            print("hub75_demo: FAIL: %s: %s" % (name, detail))
+            print("%s: FAIL: %s: %s" % (who, name, detail))
         return cond
 
-    decoded, exact = {}, 0
+    out = []
     for m in pics:
         before = len(fails)
         levels = check_picture(art, m, check)
-        if check("%s decoded" % m["name"], levels is not None):
-            decoded[m["name"]] = (levels, m["planes"])
-        exact += len(fails) == before
+        check("%s decoded" % m["name"], levels is not None)
+        out.append((m, levels, len(fails) - before))
+    return out
+
+
+def show(art, outdir):
+    from PIL import Image
+    res = decode_pictures(art)
+    pics = [m for m, _, _ in res]
+    fails = sum(n for _, _, n in res)
+    decoded = {m["name"]: (levels, m["planes"]) for m, levels, _ in res if levels is not None}
+    exact = sum(not n for _, _, n in res)
     if "picture" in decoded:
         terminal(*decoded["picture"])
         panel(*decoded["picture"]).save(os.path.join(outdir, "matrix-picture.png"))

@@ -408,14 +408,7 @@ class E131Gen:
                                           for _ in range(rng.randrange(0, 600))))
 
     def packet(self):
-        rng = self.rng
-        r = rng.random()
-        if r < 0.04:
-            return random_bytes(rng, 0, 700)
-        if r < 0.045:
-            return random_bytes(rng, 1400, UDP_MAX)
-        p = self.seed()
-        return p if r < 0.35 else mutate(rng, p, E131_FIELDS)
+        return seeded(self.rng, self.seed, E131_FIELDS)
 
 
 def opc_seed(rng, big=65535):
@@ -429,14 +422,20 @@ def opc_seed(rng, big=65535):
     return ps.opc_message(chan, data[:65535], cmd)
 
 
-def opc_packet(rng):
+def seeded(rng, seed, fields):
+    """Random bytes (4.5 %), a valid-looking packet from SEED() (30.5 %) or
+    one mutated in FIELDS (65 %)."""
     r = rng.random()
     if r < 0.04:
         return random_bytes(rng, 0, 700)
     if r < 0.045:
         return random_bytes(rng, 1400, UDP_MAX)
-    p = opc_seed(rng, UDP_MAX - 4)
-    return p if r < 0.35 else mutate(rng, p, OPC_FIELDS)
+    p = seed()
+    return p if r < 0.35 else mutate(rng, p, fields)
+
+
+def opc_packet(rng):
+    return seeded(rng, lambda: opc_seed(rng, UDP_MAX - 4), OPC_FIELDS)
 
 
 def ddp_seed(rng):
@@ -454,13 +453,7 @@ def ddp_seed(rng):
 
 
 def ddp_packet(rng):
-    r = rng.random()
-    if r < 0.04:
-        return random_bytes(rng, 0, 700)
-    if r < 0.045:
-        return random_bytes(rng, 1400, UDP_MAX)
-    p = ddp_seed(rng)
-    return p if r < 0.35 else mutate(rng, p, DDP_FIELDS)
+    return seeded(rng, lambda: ddp_seed(rng), DDP_FIELDS)
 
 
 # ------------------------------------------------------------------- checks

@@ -9,32 +9,21 @@ pixeld-panel.png (the frames side by side), and the first in the terminal.
 Exits 1 unless every pixel of every frame is exact.
 
 usage: pixeld_demo.py ARTIFACTS OUTDIR   (ARTIFACTS: the guest's /out/pixeld)"""
-import json
 import os
 import sys
 
 HERE = os.path.dirname(os.path.realpath(__file__))
 sys.path.insert(0, os.path.join(HERE, "../../../drivers/hub75/tests"))
-from hub75_demo import panel, terminal  # noqa: E402
-from hub75_pictures import check_picture  # noqa: E402
+from hub75_demo import decode_pictures, panel, terminal  # noqa: E402
 
 
 def main(art, outdir):
     from PIL import Image
-    with open(os.path.join(art, "hub75.json")) as f:
-        pics = json.load(f)
-    fails = []
-
-    def check(name, cond, detail=""):
-        if not cond:
-            fails.append(name)
-            print("pixeld_demo: FAIL: %s: %s" % (name, detail))
-        return cond
-
+    res = decode_pictures(art, "pixeld_demo")
+    fails = sum(n for _, _, n in res)
     shown = []
-    for m in pics:
-        levels = check_picture(art, m, check)
-        if check("%s decoded" % m["name"], levels is not None):
+    for m, levels, _ in res:
+        if levels is not None:
             shown.append(panel(levels, m["planes"]))
             if len(shown) == 1:
                 terminal(levels, m["planes"])
@@ -49,9 +38,9 @@ def main(art, outdir):
             sheet.paste(img, ((i % cols) * (w + 8), (i // cols) * (h + 8)))
         sheet.save(os.path.join(outdir, "pixeld-panel.png"))
     print("pixeld_demo: %d panel frames sent over E1.31 decoded from the pins, %s" % (
-        len(pics), "every pixel exact" if not fails and len(shown) == len(pics) else
-        "%d checks failed" % len(fails)))
-    return 1 if fails or not pics or len(shown) != len(pics) else 0
+        len(res), "every pixel exact" if not fails and len(shown) == len(res) else
+        "%d checks failed" % fails))
+    return 1 if fails or not res or len(shown) != len(res) else 0
 
 
 if __name__ == "__main__":
