@@ -342,6 +342,19 @@ px.tick()
 px.feed_opc(ps.opc_message(1, bytes([2]) * 12))
 check("5 s: opened, mapped, written", frames("later/f", 12) == [bytes([2]) * 12])
 
+# --- framebuffer formats ------------------------------------------------------------------------
+fbo = pixeld.FbOutput("fb", "/dev/null")
+fbo.pixels, fbo.buf = 2, bytearray([0xff, 0x80, 0x01, 0x12, 0x34, 0x56])
+fbo.fmt, fbo.where_rgb = "32", (2, 1, 0)
+check("a framebuffer of 32 bits, red at 16 (XRGB8888, the hub75 driver's): B, G, R, X bytes",
+      bytes(fbo.frame()) == bytes([0x01, 0x80, 0xff, 0, 0x56, 0x34, 0x12, 0]))
+fbo.where_rgb = (0, 1, 2)
+check("32 bits, red at 0 (XBGR8888): R, G, B, X bytes",
+      bytes(fbo.frame()) == bytes([0xff, 0x80, 0x01, 0, 0x12, 0x34, 0x56, 0]))
+fbo.fmt = "565"
+check("RGB565: the top 5, 6, 5 bits, little-endian",
+      bytes(fbo.frame()) == bytes([0x00, 0xfc, 0xaa, 0x11]), bytes(fbo.frame()).hex())
+
 # --- the program -----------------------------------------------------------------------------------
 
 
@@ -413,6 +426,30 @@ q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=Tr
                    timeout=30)
 check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
       "cannot listen" in q.stderr and "Address already in use" in q.stderr, q.stderr)
+six = conf("output f file %s/six 4 append\nmap f opc\nlisten ::\ne131 off\nddp off\n"
+           "opc-port %d\n" % (TMP, free_port(socket.SOCK_STREAM)), "six.conf")
+port6 = int(open(six).read().split("opc-port ")[1])
+p6 = subprocess.Popen([sys.executable, DAEMON, "--config", six], stderr=subprocess.PIPE,
+                      text=True)
+line = "x"
+while line and "listening" not in line:
+    line = p6.stderr.readline()
+try:
+    with socket.create_connection(("::1", port6), timeout=5) as c6:
+        c6.sendall(ps.opc_message(1, bytes([6]) * 12))
+    OpcClient4 = ps.OpcClient(port=port6, udp=True)
+    OpcClient4.put_pixels(1, bytes([4]) * 12)
+    OpcClient4.close()
+    time.sleep(0.5)
+    got6 = frames("six", 12)
+except OSError as e:
+    got6 = str(e)
+p6.terminate()
+p6.wait(timeout=10)
+check("listen :: takes IPv6 (OPC over TCP to ::1) and IPv4 (UDP to 127.0.0.1)",
+      "listening on ::" in line and isinstance(got6, list) and
+      sorted(got6) == [bytes([4]) * 12, bytes([6]) * 12],
+      (line, got6))
 p.send_signal(signal.SIGTERM)
 try:
     rc = p.wait(timeout=10)
