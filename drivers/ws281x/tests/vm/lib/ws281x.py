@@ -39,6 +39,31 @@ def bind_only(name):
     return "/dev/" + os.path.basename(nodes[0])
 
 
+def gpio_pin(phandle_cell, bit):
+    """The trace's pin id of GPIO line BIT of the bank whose phandle is
+    given (the banks of the board path's tree)."""
+    for node in glob.glob("/proc/device-tree/ocp@44c00000/gpio@*"):
+        with open(node + "/phandle", "rb") as f:
+            if f.read() == phandle_cell:
+                base = int(node.rsplit("@", 1)[1], 16)
+                return 64 + [0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000].index(base) * 32 + bit
+    raise ValueError("no GPIO bank with phandle %s" % phandle_cell.hex())
+
+
+def gpio_strings(node, leds, order="grb"):
+    """[(pin, name, LEDS, ORDER)] of the strings of a controller whose
+    strings are all GPIO pins (/proc/device-tree/NODE/string@*), by reg."""
+    out = {}
+    for sub in glob.glob("/proc/device-tree/%s/string@*" % node):
+        with open(sub + "/reg", "rb") as f:
+            reg = int.from_bytes(f.read(), "big")
+        with open(sub + "/gpios", "rb") as f:
+            cells = f.read()
+        pin = gpio_pin(cells[0:4], int.from_bytes(cells[4:8], "big"))
+        out[reg] = (pin, "gpio%d_%d" % ((pin - 64) // 32, (pin - 64) % 32), leds, order)
+    return [out[k] for k in sorted(out)]
+
+
 def pin_edges(data, pins):
     """{pin: [(cycle, level), ...]} of a raw trace, for the pins asked."""
     _, _, _, origin, count, _, _ = trace.HDR.unpack_from(data)
