@@ -80,7 +80,7 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 3950 scripts/vm.sh test "5.10 6.1 6.12"	# [4090], 3 kernels, one boot each (and a second for 71)
+step vmtest 3990 scripts/vm.sh test "5.10 6.1 6.12"	# [4132], 3 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).
