@@ -373,8 +373,9 @@ check("a configuration with errors: exit 2, the errors, no traceback", r.returnc
       "b.conf: no map line" in r.stderr and "Traceback" not in r.stderr, r.stderr)
 ports = dict(e=free_port(), o=free_port(socket.SOCK_STREAM), d=free_port())
 base = ("output f file %s/run 4 append\nstats-file %s/stats\nlisten 127.0.0.1\n"
-        "e131-port %d\nopc-port %d\nddp-port %d\n" % (TMP, TMP, ports["e"], ports["o"],
-                                                       ports["d"]))
+        "e131-port %d\nopc-port %d\nddp-port %d\n"
+        "output big file %s/big 21845 append\nmap big opc channel 2\n"
+        % (TMP, TMP, ports["e"], ports["o"], ports["d"], TMP))
 path = conf(base + "map f opc channel 1\n", "run.conf")
 r = subprocess.run([sys.executable, DAEMON, "--config", path, "--check"], capture_output=True,
                    text=True)
@@ -394,6 +395,13 @@ opc = ps.OpcClient(port=ports["o"])
 opc.put_pixels(1, bytes([1]) * 12)
 time.sleep(0.3)
 check("OPC on TCP: the frame", frames("run", 12) == [bytes([1]) * 12], frames("run", 12))
+big = pattern(65535, 5)
+opc.put_pixels(2, big)
+end = time.monotonic() + 10
+while time.monotonic() < end and not frames("big", 65535):
+    time.sleep(0.1)
+check("OPC on TCP, the largest message (65535 bytes, 21845 pixels: more than a UDP datagram "
+      "holds): the frame", frames("big", 65535) == [big], len(frames("big", 65535)))
 with open(path, "a") as f:
     f.write("map f ddp offset x\n")
 p.send_signal(signal.SIGHUP)
