@@ -95,7 +95,8 @@ BAD = [("output a file x 10\nmap a e131 universe 0\n", ":2: map a e131: universe
         "contiguous"),
        ("output a file x 10\nmap b opc\n", ":2: map: no output 'b' defined above"),
        ("output a file x 10\noutput a file y 10\nmap a opc\n", ":2: output a is defined twice"),
-       ("output a ws281x /dev/a /dev/b\nmap a opc\n", ":1: output a: 'ws281x /dev/a /dev/b' is not"),
+       ("output a ws281x /dev/a /dev/b\nmap a opc\n",
+        ":1: output a: 'ws281x /dev/a /dev/b' is not"),
        ("output a file x 10\nmap a opc\nopc maybe\n", ":3: opc is on or off, not 'maybe'"),
        ("output a file x 10\nmap a opc\nopc-port 70000\n", ":3: opc-port is a whole number "
         "from 1 to 65535"),
@@ -355,7 +356,7 @@ fbo.fmt = "565"
 check("RGB565: the top 5, 6, 5 bits, little-endian",
       bytes(fbo.frame()) == bytes([0x00, 0xfc, 0xaa, 0x11]), bytes(fbo.frame()).hex())
 
-# --- the program -----------------------------------------------------------------------------------
+# --- the program ----------------------------------------------------------------------------------
 
 
 def free_port(kind=socket.SOCK_DGRAM):
