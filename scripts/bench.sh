@@ -74,41 +74,22 @@ if want rpmsg-fw; then
 	sed -n 's/^PASS: \(echo-pru0: cycles per message\)/BENCH: rpmsg firmware \1 (exact)/p' \
 		"$PRUKIT_TOP/out/rpmsg-fw-bench.log" | sed 's/; /\n       /g'
 fi
-if want ws281x; then
-	"$PRUKIT_TOP/drivers/ws281x/tests/bench.sh" >"$PRUKIT_TOP/out/ws281x-bench.log" 2>&1 ||
-		die "drivers/ws281x/tests/bench.sh failed; see out/ws281x-bench.log"
-	grep '^BENCH:' "$PRUKIT_TOP/out/ws281x-bench.log"
-fi
-if want beaglelogic; then
-	"$PRUKIT_TOP/drivers/beaglelogic/tests/bench.sh" >"$PRUKIT_TOP/out/beaglelogic-bench.log" 2>&1 ||
-		{ grep -E '^(FAIL|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log" || true
-		  die "drivers/beaglelogic/tests/bench.sh failed; see out/beaglelogic-bench.log"; }
-	grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/beaglelogic-bench.log"
-fi
-if want hub75; then
-	"$PRUKIT_TOP/drivers/hub75/tests/bench.sh" >"$PRUKIT_TOP/out/hub75-bench.log" 2>&1 ||
-		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/hub75-bench.log" || true
-		  die "drivers/hub75/tests/bench.sh failed; see out/hub75-bench.log"; }
-	grep -E '^(BENCH|INFO):' "$PRUKIT_TOP/out/hub75-bench.log"
-fi
-if want pwm; then
-	"$PRUKIT_TOP/drivers/pru_pwm/tests/bench.sh" >"$PRUKIT_TOP/out/pru_pwm-bench.log" 2>&1 ||
-		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_pwm-bench.log" || true
-		  die "drivers/pru_pwm/tests/bench.sh failed; see out/pru_pwm-bench.log"; }
-	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_pwm-bench.log"
-fi
-if want encoder; then
-	"$PRUKIT_TOP/drivers/pru_encoder/tests/bench.sh" >"$PRUKIT_TOP/out/pru_encoder-bench.log" 2>&1 ||
-		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pru_encoder-bench.log" || true
-		  die "drivers/pru_encoder/tests/bench.sh failed; see out/pru_encoder-bench.log"; }
-	grep -E '^BENCH:' "$PRUKIT_TOP/out/pru_encoder-bench.log"
-fi
-if want pixeld; then
-	"$PRUKIT_TOP/tools/pixeld/tests/bench.sh" >"$PRUKIT_TOP/out/pixeld-bench.log" 2>&1 ||
-		{ grep -E '^FAIL:' "$PRUKIT_TOP/out/pixeld-bench.log" || true
-		  die "tools/pixeld/tests/bench.sh failed; see out/pixeld-bench.log"; }
-	grep -E '^BENCH:' "$PRUKIT_TOP/out/pixeld-bench.log"
-fi
+# bench_part NAME SCRIPT SHOWN: a part's own bench script, its log in
+# out/NAME-bench.log; its lines matching ^(SHOWN): are printed, and on a
+# failure its FAIL: and INFO: lines before make bench stops.
+bench_part() {
+	local log=$PRUKIT_TOP/out/$1-bench.log
+	"$PRUKIT_TOP/$2" >"$log" 2>&1 ||
+		{ grep -E '^(FAIL|INFO):' "$log" || true
+		  die "$2 failed; see out/$1-bench.log"; }
+	grep -E "^($3):" "$log"
+}
+want ws281x && bench_part ws281x drivers/ws281x/tests/bench.sh BENCH
+want beaglelogic && bench_part beaglelogic drivers/beaglelogic/tests/bench.sh 'BENCH|INFO'
+want hub75 && bench_part hub75 drivers/hub75/tests/bench.sh 'BENCH|INFO'
+want pwm && bench_part pru_pwm drivers/pru_pwm/tests/bench.sh BENCH
+want encoder && bench_part pru_encoder drivers/pru_encoder/tests/bench.sh BENCH
+want pixeld && bench_part pixeld tools/pixeld/tests/bench.sh BENCH
 if want vm; then
 	# The simulator's speed, side by side: the same firmware (blinky on both
 	# cores) in the host tool, then in the VM.
