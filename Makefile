@@ -9,22 +9,26 @@
 #                         servers (beaglelogic-tcpd, prukit-pixeld) and their systemd
 #                         units, prukit-pixeld's configuration (kept if there is one)
 #   make kernels          cross-build for Debian armmp 5.10, 6.1, 6.12 (W=1, sparse),
-#                         as Debian ships them and with the kernel's own PRU drivers
+#                         as Debian ships them and with the kernel's own PRU drivers,
+#                         and for the kernels boards run: 5.10-ti, 6.12-ti [KVERS=...]
 #   make firmware         PRU firmware (bootstraps pru-gcc if none on PATH)
 #   make overlays         device-tree overlays (out/overlays/*.dtbo), build only;
 #                         make check validates them (scripts/overlays.sh --check)
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
-#   make vmtest           VM tests on Debian's 5.10, 6.1, 6.12 [KVERS=...] [TESTS=...]:
-#                         the kernel's own PRU drivers on the QEMU PRU-ICSS
+#   make vmtest           VM tests on 5.10-ti, 6.1, 6.12, 6.12-ti [KVERS=...] [TESTS=...]:
+#                         the kernel's own PRU drivers on the QEMU PRU-ICSS; any of
+#                         5.10 6.1 6.12 5.10-ti 6.12-ti (Documentation/kernels.rst)
 #   make vmdeb            [KVER=6.1]: make deb's packages on a Debian root in the VM,
 #                         installed with apt (DKMS in the guest), used, removed, purged
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
 #   make demo             the emulated BeagleBone runs prukit's drivers and the Cookbook's
-#                         NeoPixel example, and shows what the pins did
+#                         NeoPixel example, and shows what the pins did [KVER=6.1, or
+#                         any kernel vmtest takes: KVER=6.12-ti for TI's PRU drivers]
 #   make bench            speed: the simulator on the host and in the VM, the layer's round
 #                         trip, rpmsg round trips, cycles per message, the drivers' figures
 #                         [PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder vm stress"]
+#                         [KVER=...: the VM parts on that kernel; default 6.1, stress 6.1 6.12]
 #   make deb              Debian packages prukit-dkms, -firmware, -overlays, -tools
 #                         (arch all) into out/deb/, for a board's apt
 #   make check            everything CI runs; ends with "N passed, N failed"
@@ -170,7 +174,7 @@ install: modules_install firmware_install overlays_install udev_install headers_
 
 kernels:
 	$(SCRIPTS)/checkpatch.sh
-	$(SCRIPTS)/kernels.sh $(KVERS)
+	$(SCRIPTS)/kernels.sh $(or $(KVERS),5.10 6.1 6.12 5.10-ti 6.12-ti)
 
 tools:
 	$(MAKE) -C tools/prusim
@@ -178,9 +182,8 @@ tools:
 kunit:
 	$(SCRIPTS)/kunit.sh
 
-KVERS ?= 5.10 6.1 6.12
 vmtest:
-	$(SCRIPTS)/vm.sh test "$(KVERS)" "$(TESTS)"
+	$(SCRIPTS)/vm.sh test "$(or $(KVERS),5.10-ti 6.1 6.12 6.12-ti)" "$(TESTS)"
 
 # The Debian packages in the VM: installed, used, removed, purged (6.1)
 vmdeb:
@@ -196,10 +199,10 @@ checkpatch:
 	$(SCRIPTS)/checkpatch.sh
 
 demo:
-	$(SCRIPTS)/demo.sh
+	PRUKIT_VM_KVER="$(KVER)" $(SCRIPTS)/demo.sh
 
 bench:
-	$(SCRIPTS)/bench.sh $(PARTS)
+	PRUKIT_VM_KVER="$(KVER)" $(SCRIPTS)/bench.sh $(PARTS)
 
 deb:
 	$(SCRIPTS)/deb.sh

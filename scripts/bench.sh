@@ -104,7 +104,7 @@ print("%.2f" % (res["cycles"] / (ru.ru_utime + ru.ru_stime) / 1e6))
 PY
 	)
 	echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
-	"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
+	"$PRUKIT_TOP/scripts/vm.sh" run "${PRUKIT_VM_KVER:-6.1}" "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
 		>"$out/guest.log" 2>&1 || { tail -n 20 "$out/guest.log"; die "the bench guest failed"; }
 	grep -E '^(BENCH|INFO):' "$out/guest.log" || true
 	python3 - "$host_mcps" "$out/guest.log" <<'PY'
@@ -132,7 +132,7 @@ fi
 # 3x slower, measured), and a regression should fail here, not time out.
 want stress || exit 0
 rc=0
-for k in ${BENCH_STRESS_KVERS:-6.1 6.12}; do
+for k in ${BENCH_STRESS_KVERS:-${PRUKIT_VM_KVER:-6.1 6.12}}; do
 	VM_TIMEOUT=${VM_TIMEOUT:-4800} \
 		"$PRUKIT_TOP/scripts/vm.sh" run "$k" \
 		"$PRUKIT_TOP/tests/vm/bench/stop-stress" "" "$out/stress-$k" \

@@ -59,11 +59,14 @@ qemu_check() {
 # only grow as tests are added).  The harness checks itself first.
 step harness 55 harness_check				# [59]
 step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
-step kernels 19 scripts/kernels.sh 5.10 6.1 6.12	# [21]: armmp and board builds
+# Debian's three kernels as shipped and as a board's (with the kernel's
+# own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU
+# drivers (Documentation/kernels.rst)
+step kernels 31 scripts/kernels.sh 5.10 6.1 6.12 5.10-ti 6.12-ti	# [33]
 step qemu 1 qemu_check					# [1]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
-step dkms 25 scripts/dkms-test.sh			# [27]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12
+step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti
 step deb 63 scripts/deb.sh --check			# [67]: 4 packages, lintian
 step tool 33 tests/tool/test-prukit.py			# [35]: the prukit command on the host
 step pixeld 109 tools/pixeld/tests/check.sh		# [120]: prukit-pixeld on the host, fuzzed
@@ -80,7 +83,10 @@ while read -r name min path <&3; do
 	fi
 done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
-step vmtest 3990 scripts/vm.sh test "5.10 6.1 6.12"	# [4132], 3 kernels, one boot each (and a second for 71)
+# The VM tests on the kernels boards run and on mainline's drivers: BeagleBoard's
+# 5.10-ti, Debian's 6.1 and 6.12, and 6.12 with TI's PRU drivers (Debian's
+# 5.10 is left to "make vmtest KVERS=5.10": a board on 5.10 runs TI's)
+step vmtest 5300 scripts/vm.sh test "5.10-ti 6.1 6.12 6.12-ti"	# [5500?], 4 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).

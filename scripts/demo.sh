@@ -58,8 +58,11 @@ in=$(mktemp -d)
 trap 'rm -rf "$in"' EXIT
 cp -r "$PRUKIT_TOP/tests/vm/demo/." "$in/"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" frames "$in/matrix-frames"
-msg "booting the emulated BeagleBone (Linux 6.1 under QEMU, the kernel's own PRU drivers on a simulated PRU-ICSS)"
-"$PRUKIT_TOP/scripts/vm.sh" run 6.1 "$in/board" "$in" "$out"
+# make demo KVER=6.12-ti: the same on another kernel (Documentation/kernels.rst)
+kver=${PRUKIT_VM_KVER:-6.1}
+kernel_flavour "$kver" >/dev/null
+msg "booting the emulated BeagleBone ($kver under QEMU, the kernel's own PRU drivers on a simulated PRU-ICSS)"
+"$PRUKIT_TOP/scripts/vm.sh" run "$kver" "$in/board" "$in" "$out"
 
 "$PRUKIT_TOP/out/tools/prusim" --trace-in "$out/trace.bin" --events "$out/neopixel.events" \
 	--vcd "$out/neopixel.vcd"

@@ -2,16 +2,17 @@
 # SPDX-License-Identifier: GPL-2.0-only
 #
 # Prove dkms.conf: `dkms add` and `dkms build` prukit, as a user's machine
-# would, against Debian's armmp 5.10, 6.1 and 6.12 headers with the ARM
-# cross compiler (the package test, vm.sh deb, builds it with DKMS in the
-# guest, natively, for 6.1).
+# would, against Debian's armmp 5.10, 6.1 and 6.12 headers and the headers
+# of BeagleBoard's 5.10.168-ti-r71 (5.10-ti: scripts/fetch-kernels.sh) with
+# the ARM cross compiler (the package test, vm.sh deb, builds it with DKMS
+# in the guest, natively, for 6.1).
 # dkms runs with private trees under out/dkms, so the machine's own
 # /var/lib/dkms and /lib/modules are not touched.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
 need_pkgs dkms gcc-arm-linux-gnueabihf
-SERIES=${PRUKIT_DKMS_SERIES:-5.10 6.1 6.12}
+SERIES=${PRUKIT_DKMS_SERIES:-5.10 6.1 6.12 5.10-ti}
 declare -A KVER KDIR
 while read -r series kver kdir _root; do
 	KVER[$series]=$kver

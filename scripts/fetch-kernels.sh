@@ -10,6 +10,17 @@
 # KDIR is a usable external-module build tree, ROOT the extracted header
 # packages, IMAGE (with --image) the extracted kernel image package.
 #
+# The kernels boards run, by name beside Debian's (kernel_flavour in
+# scripts/lib.sh):
+#   5.10-ti  BeagleBoard's 5.10.168-ti-r71, built for the VM's machine: test
+#            material in shared/ti-kernel beside the checkout (PRUKIT_SHARED
+#            names another place), unpacked into the cache as Debian's
+#            packages are: its headers tree as KDIR, and IMAGE laid out as
+#            Debian's image package is (boot/vmlinuz-<release>,
+#            lib/modules/<release>, usr/lib/linux-image-<release>/<dtb>).
+#   6.12-ti  Debian's 6.12 (the same lines as 6.12): TI's PRU drivers are
+#            built beside it by scripts/pru-kit.sh.
+#
 # Packages come from the Debian archive the machine's own apt sources name,
 # through a private apt configuration under $PRUKIT_CACHE/apt: the machine's
 # apt sources, lists and dpkg state are never touched.
@@ -37,8 +48,44 @@ newest_release() {
 		sed -e 's/^linux-headers-//' -e 's/-armmp$//' | sort -V | tail -n 1
 }
 
+# ti_kernel SERIES - the line of a whole TI kernel from shared/ti-kernel,
+# unpacked into the cache under a key of its files' contents.
+ti_kernel() {
+	local series=$1 kver src key dest
+	case $series in
+	5.10-ti) kver=5.10.168-ti-r71 ;;
+	*) die "no TI kernel for $series" ;;
+	esac
+	src=$(ti_material)/$kver
+	[ -f "$src/zImage" ] && [ -f "$src/headers.tar.xz" ] ||
+		die "$series: BeagleBoard's kernel is not in $src (shared/ beside the checkout; PRUKIT_SHARED=DIR names another)"
+	key=$(cat "$src"/zImage "$src"/vexpress-v2p-ca15-tc1.dtb "$src"/modules.tar.xz \
+		"$src"/headers.tar.xz | sha256sum | cut -c1-12)
+	dest=$PRUKIT_CACHE/kernels/$kver-$key
+	if [ ! -e "$dest/.complete" ]; then
+		msg "unpacking $kver from $src"
+		rm -rf "$dest"
+		mkdir -p "$dest/root/usr/src" "$dest/image/boot" "$dest/image/usr/lib/linux-image-$kver"
+		tar -xJf "$src/headers.tar.xz" -C "$dest/root/usr/src"
+		tar -xJf "$src/modules.tar.xz" -C "$dest/image"
+		cp "$src/zImage" "$dest/image/boot/vmlinuz-$kver"
+		cp "$src/vexpress-v2p-ca15-tc1.dtb" "$dest/image/usr/lib/linux-image-$kver/"
+		[ -f "$dest/root/usr/src/linux-headers-$kver/Module.symvers" ] ||
+			die "$src/headers.tar.xz has no linux-headers-$kver/Module.symvers"
+		touch "$dest/.complete"
+	fi
+	line="$series $kver $dest/root/usr/src/linux-headers-$kver $dest/root"
+	[ $image -eq 0 ] || line="$line $dest/image"
+	echo "$line"
+}
+
 for series in "$@"; do
-	rel=$(newest_release "$series")
+	flavour=$(kernel_flavour "$series")
+	if [ "$flavour" = ti-kernel ]; then
+		ti_kernel "$series"
+		continue
+	fi
+	rel=$(newest_release "${series%-ti}")
 	[ -n "$rel" ] || die "no armmp headers found for kernel $series"
 	kver=$rel-armmp
 	dest=$PRUKIT_CACHE/kernels/$kver
@@ -67,7 +114,7 @@ for series in "$@"; do
 	fi
 	kdir=$root/usr/src/linux-headers-$kver
 	# Debian's modpost cannot check ARM device tables: rebuild it once.
-	"$PRUKIT_TOP/scripts/fix-modpost.sh" "$series" "$kdir" \
+	"$PRUKIT_TOP/scripts/fix-modpost.sh" "${series%-ti}" "$kdir" \
 		"$(dirname "$(readlink -f "$kdir/scripts")")" >&2
 	line="$series $kver $kdir $root"
 	if [ $image -eq 1 ]; then

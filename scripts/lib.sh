@@ -44,6 +44,44 @@ need_pkgs() {
 		apt-get "${lock[@]}" install -y --no-install-recommends "${missing[@]}"
 }
 
+# The kernels prukit builds for and boots, by name (SERIES):
+#   5.10 6.1 6.12  Debian's armmp kernels, with the kernel's own (mainline)
+#                  PRU drivers built beside them from Debian's linux-source
+#                  for the board path (scripts/pru-kit.sh);
+#   5.10-ti        BeagleBoard's TI kernel 5.10.168-ti-r71, whole (its PRU
+#                  drivers, TI's rpmsg_pru, PREEMPT, HZ=250), built for the
+#                  VM's machine: shared/ti-kernel/ beside the checkout;
+#   6.12-ti        Debian's 6.12 with TI's 6.x pru_rproc and pruss_intc
+#                  (shared/ti-kernel/ti-6.x-pru-drivers) and Debian's pruss.
+# kernel_flavour SERIES - debian, ti-kernel or ti-drivers; fails on an
+# unknown name.
+PRUKIT_SERIES_ALL="5.10 6.1 6.12 5.10-ti 6.12-ti"
+kernel_flavour() {
+	case $1 in
+	5.10 | 6.1 | 6.12) echo debian ;;
+	5.10-ti) echo ti-kernel ;;
+	6.12-ti) echo ti-drivers ;;
+	*) die "unknown kernel '$1' (one of: $PRUKIT_SERIES_ALL)" ;;
+	esac
+}
+
+# kernel_tag SERIES RELEASE - what names a flavour's build and VM
+# directories (out/kernels/TAG-board, out/vm/TAG): the release, and for
+# Debian's kernel with TI's PRU drivers the release with "-tipru" (it
+# shares Debian's release).
+kernel_tag() {
+	case $(kernel_flavour "$1") in
+	ti-drivers) echo "$2-tipru" ;;
+	*) echo "$2" ;;
+	esac
+}
+
+# ti_material - shared/ti-kernel: test material beside the checkout (CI
+# lays shared/ beside its clone), or under $PRUKIT_SHARED.
+ti_material() {
+	realpath -m "${PRUKIT_SHARED:-$PRUKIT_TOP/../shared}/ti-kernel"
+}
+
 ncpus() { getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1; }
 
 # prukit_drivers [TOP] - the drivers, one name per line, in the order of

@@ -18,14 +18,15 @@
 # addresses on an AM335x (GPIO banks at 0x44e07000, 0x4804c000, ...).
 #
 #   vm.sh run KVER SCRIPT [IN] [OUT]   (make vmrun)
-#	Boot SERIES KVER (5.10, 6.1, 6.12), run SCRIPT as root in the guest
+#	Boot SERIES KVER (5.10, 6.1, 6.12, 5.10-ti, 6.12-ti: scripts/lib.sh
+#	kernel_flavour), run SCRIPT as root in the guest
 #	with /proc, /sys, /dev and debugfs mounted, prukit's modules loaded
 #	and the host directory IN unpacked at /in (also the working directory);
 #	copy the guest's /out to OUT; exit with the script's status.  With
 #	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
-#	For each kernel, boot once and run the tests in tests/vm/cases and
+#	For each kernel (default: 5.10-ti 6.1 6.12 6.12-ti), boot once and run the tests in tests/vm/cases and
 #	drivers/<driver>/tests/vm/cases of drivers/registry's drivers (all,
 #	or those named in TESTS), bring back
 #	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N
@@ -71,7 +72,10 @@ VMDIR=$PRUKIT_TOP/tests/vm
 # stack_depot_disable=1 (5.12 on) SLUB keeps no whole stacks, whose pages
 # the stack depot never gives back (a 6.1 run lost 40 KiB of free memory
 # per display bind/unbind cycle to it).
-cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1"
+# log_buf_len=1M: the tests and the splat check read the whole kernel log
+# with dmesg, and some kernels keep little of it (5.10-ti's build: 16 KiB,
+# which a boot of every test overflows; Debian's: 128 KiB).
+cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_len=1M"
 cmdline+=" slub_debug=U,kmalloc-*,kernfs_node_cache stack_depot_disable=1"
 cmdline+=${PRUKIT_VM_APPEND:+ $PRUKIT_VM_APPEND}
 machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
@@ -92,13 +96,17 @@ qemu_binary() {
 
 # build_prukit SERIES - cross-build prukit's modules (as for a BeagleBone
 # kernel, with the kernel's PRU drivers) and firmware for SERIES (no-ops
-# when up to date) and set kver, kdir and kimage.
+# when up to date) and set kver, kdir, kimage and tag (the name of its
+# directories in out/kernels and out/vm: scripts/lib.sh kernel_tag).
+# SERIES is one of Debian's (5.10, 6.1, 6.12) or a board's kernel (5.10-ti:
+# BeagleBoard's whole; 6.12-ti: Debian's with TI's PRU drivers).
 build_prukit() {
 	local series=$1 line
 	line=$("$PRUKIT_TOP/scripts/fetch-kernels.sh" --image "$series")
 	read -r _ kver kdir _ kimage <<<"$line"
+	tag=$(kernel_tag "$series" "$kver")
 	"$PRUKIT_TOP/scripts/kernels.sh" --build-only --board "$series" >/dev/null ||
-		die "building prukit for $kver failed (see out/kernels/$kver*/build.log)"
+		die "building prukit for $series ($kver) failed (see out/kernels/$tag*/build.log)"
 	make -s -C "$PRUKIT_TOP" firmware >/dev/null
 	make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
 	qemu_binary
@@ -122,11 +130,13 @@ make_dtb() {
 		die "cannot build overlay $board"
 	overlays+=("$dir/board.dtbo")
 	# Debian's dtbs carry no symbols: give the GIC its label, for the
-	# board's interrupts (interrupt-parent = <&gic>)
+	# board's interrupts (interrupt-parent = <&gic>).  BeagleBoard's trees
+	# are built with dtc -@ (5.10-ti's has the label).
 	cp "$base" "$dir/base.dtb"
 	base=$dir/base.dtb
-	fdtput -c "$base" /__symbols__
-	fdtput -t s "$base" /__symbols__ gic /interrupt-controller@2c001000
+	fdtget -p "$base" /__symbols__ >/dev/null 2>&1 || fdtput -c "$base" /__symbols__
+	[ "$(fdtget "$base" /__symbols__ gic 2>/dev/null)" = /interrupt-controller@2c001000 ] ||
+		fdtput -t s "$base" /__symbols__ gic /interrupt-controller@2c001000
 	for o in "$VMDIR"/overlays/*.dtso; do
 		[ -e "$o" ] || continue
 		# the package test's tree: the board and the package's overlays only
@@ -184,18 +194,21 @@ make_initrd() {
 	done <"$VMDIR/modules"
 	cp "$kimage/lib/modules/$kver"/modules.{order,builtin,builtin.modinfo} "$mods/" 2>/dev/null || true
 	mkdir -p "$mods/updates"
-	for d in "$PRUKIT_TOP/out/kernels/$kver-board" "$PRUKIT_TOP/out/kernels/$kver-pru-kit" \
-		"$PRUKIT_TOP/out/kernels/$kver-rpmsg-kit" "$PRUKIT_TOP/out/kernels/$kver-counter-kit"; do
+	# (a board's kernel, 5.10-ti, has its PRU drivers, rpmsg and counter in
+	# its image: tests/vm/modules; no kit is built for it)
+	for d in "$PRUKIT_TOP/out/kernels/$tag-board" "$PRUKIT_TOP/out/kernels/$tag-pru-kit" \
+		"$PRUKIT_TOP/out/kernels/$tag-rpmsg-kit" "$PRUKIT_TOP/out/kernels/$tag-counter-kit"; do
 		# bare: the kernel's PRU drivers (and rpmsg and counter), as a board's
 		# kernel package has them, not prukit's modules
-		[ $bare = 1 ] && [ "$d" = "$PRUKIT_TOP/out/kernels/$kver-board" ] && continue
+		[ $bare = 1 ] && [ "$d" = "$PRUKIT_TOP/out/kernels/$tag-board" ] && continue
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
 	done
-	if [ $bare = 0 ]; then
+	if [ $bare = 0 ] && [ ! -e "$mods/kernel/drivers/rpmsg/rpmsg_pru.ko" ]; then
 		# A stand-in for TI's own rpmsg_pru where TI's kernels have it,
-		# beside prukit's in updates/ (tests/vm/cases/71-rpmsg-ti-module)
+		# beside prukit's in updates/ (tests/vm/cases/71-rpmsg-ti-module);
+		# 5.10-ti has TI's own (tests/vm/modules)
 		mkdir -p "$mods/kernel/drivers/rpmsg"
-		cp "$PRUKIT_TOP/out/kernels/$kver-board-ti/rpmsg_pru.ko" "$mods/kernel/drivers/rpmsg/" ||
+		cp "$PRUKIT_TOP/out/kernels/$tag-board-ti/rpmsg_pru.ko" "$mods/kernel/drivers/rpmsg/" ||
 			die "no stand-in for TI's rpmsg_pru (scripts/kernels.sh --board)"
 	fi
 	# as "make install" leaves a board: depmod with prukit's depmod.d
@@ -215,6 +228,7 @@ make_initrd() {
 			echo "PRUKIT_MODE=$mode"
 			echo "PRUKIT_MODULES='${PRUKIT_DEB_MODULES:-pruss irq_pruss_intc pru_rproc}'"
 			echo "PRUKIT_KVER='$kver'"
+			echo "PRUKIT_SERIES='$series'"
 		} >"$stage/prukit/config"
 		[ "$mode" = deb ] && install -m 0755 "$arg" "$stage/prukit/script"
 		(cd "$stage" && find . -print0 | cpio --null -o -H newc --quiet) >"$dir/prukit.cpio"
@@ -259,6 +273,7 @@ make_initrd() {
 		echo "PRUKIT_MODULES='$PRUKIT_VM_MODULES'"
 		[ "$mode" = test ] && echo "PRUKIT_TESTS='$arg'"
 		echo "PRUKIT_KVER='$kver'"
+		echo "PRUKIT_SERIES='$series'"
 	} >"$stage/prukit/config"
 	[ "$mode" = run ] && install -m 0755 "$arg" "$stage/prukit/script"
 
@@ -419,7 +434,7 @@ deb_root() {
 		mkfs.ext4 -q -F -L prukit-root -d "$tmp/root" "$tmp/root.img" ||
 			die "mkfs.ext4 -d $tmp/root failed"
 		rm -rf "$tmp/root"
-		dir=$PRUKIT_TOP/out/vm/$kver/stage2
+		dir=$PRUKIT_TOP/out/vm/$tag/stage2
 		rm -rf "$dir"
 		mkdir -p "$dir"
 		make_dtb "$dir/dtb"
@@ -468,7 +483,7 @@ kernel_header_debs() {
 deb_test() {
 	local series=$1 dir rootimg rc=0
 	build_prukit "$series"
-	dir=$PRUKIT_TOP/out/vm/$kver/deb
+	dir=$PRUKIT_TOP/out/vm/$tag/deb
 	rm -rf "$dir"
 	mkdir -p "$dir/in/debs" "$dir/ovl"
 	# the packages of this tree, and the same under an older version for
@@ -509,7 +524,7 @@ run)
 	out=${4:-$PRUKIT_TOP/out/vmrun}
 	[ -f "$script" ] || die "no such script: $script"
 	build_prukit "$series"
-	dir=$PRUKIT_TOP/out/vm/$kver/run
+	dir=$PRUKIT_TOP/out/vm/$tag/run
 	mkdir -p "$dir"
 	make_dtb "$dir/dtb"
 	make_initrd "$dir" run "$(cd "$(dirname "$script")" && pwd)/$(basename "$script")"
@@ -522,7 +537,7 @@ run)
 	exit "$rc"
 	;;
 test)
-	kvers=${1:-5.10 6.1 6.12}
+	kvers=${1:-5.10-ti 6.1 6.12 6.12-ti}
 	tests=${2:-}
 	# tests/vm/cases and every driver's drivers/<driver>/tests/vm/cases
 	# (scripts/lib.sh), all in the same boot.
@@ -538,12 +553,13 @@ test)
 	# (builds use every CPU), then the boots, VM_JOBS at once, each into
 	# its directory's results; then, kernel by kernel, the host halves
 	# and the results.
-	declare -A kver_of kimage_of
+	declare -A kver_of kimage_of tag_of
 	for series in $kvers; do
 		build_prukit "$series"
 		kver_of[$series]=$kver
 		kimage_of[$series]=$kimage
-		dir=$PRUKIT_TOP/out/vm/$kver
+		tag_of[$series]=$tag
+		dir=$PRUKIT_TOP/out/vm/$tag
 		mkdir -p "$dir"
 		make_dtb "$dir/dtb"
 		make_initrd "$dir" test "$tests"
@@ -556,8 +572,8 @@ test)
 		fi
 		kver=${kver_of[$series]}
 		kimage=${kimage_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/$kver
-		msg "vmtest: booting $kver"
+		dir=$PRUKIT_TOP/out/vm/${tag_of[$series]}
+		msg "vmtest: booting $series ($kver)"
 		rm -rf "$dir/results" "$dir/seconds" "$dir/boot2"
 		(
 			set +e
@@ -573,7 +589,7 @@ test)
 	total_f=0
 	for series in $kvers; do
 		kver=${kver_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/$kver
+		dir=$PRUKIT_TOP/out/vm/${tag_of[$series]}
 		label=$series
 		res=$dir/results
 		# kernel_log_clean's line comes last: without it the boot's

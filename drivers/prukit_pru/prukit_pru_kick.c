@@ -44,6 +44,36 @@
  * The module holds a reference to itself from start to stop, so it cannot
  * go while a processor runs rpmsg through it; when it goes, it gives every
  * processor back its own operations.
+ *
+ * A processor whose driver kicks by itself (TI's pru_rproc: 5.10-ti, 6.1-ti,
+ * 6.6+) keeps its kick and vring interrupt; prukit guards them ("guard"):
+ *
+ *  - load: TI's kick raises the first event of the firmware's map without
+ *    looking whether there is a map, and dereferences NULL for a firmware
+ *    with a vdev and none (5.10-ti, TI's 6.x pru_rproc.c).  Such a firmware
+ *    is refused at load, with the same message as on mainline, so that one
+ *    firmware runs, or is refused, alike on every kernel.
+ *  - stop: TI's pru_rproc halts the core in its stop, which remoteproc runs
+ *    after freeing the vdev's buffers, so a firmware that checked DRIVER_OK
+ *    stores into freed memory.  The same subdevice as on mainline runs
+ *    TI's stop (halt, free the vring interrupt, dispose of the mappings)
+ *    before the vdev goes; from then on kicks are dropped (TI's kick would
+ *    raise an event whose mapping is gone), and remoteproc's own call of
+ *    the stop returns what the first one did.
+ *
+ * The guard also parks TI's stale vring interrupt.  TI's pru_rproc keeps
+ * the Linux interrupt of the "vring" event it requested for an rpmsg boot
+ * (pru->irq_vring) after that boot, and disposes of that number again at
+ * every later stop of the core, rpmsg or not (5.10-ti; TI's 6.x
+ * pru_rproc_stop()).  Once the first dispose freed it, the next interrupt
+ * mapped anywhere may get the number: a prukit driver's own event on that
+ * core (its interrupts-extended) did in the VM, and the driver's unbind
+ * then hung, disposing of its own interrupt under its live handler
+ * (irq_dispose_mapping() waiting in synchronize_irq() for the handler,
+ * which waited for the lock the unbind held).  So after every stop of TI's
+ * the number goes to a placeholder in an interrupt domain of this
+ * module's, which nothing requests, until TI's next rpmsg boot takes a
+ * fresh one.  TI's dispose then frees only the placeholder.
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
@@ -77,7 +107,8 @@
  * @load: pru_rproc's load operation
  * @start: its start
  * @stop: its stop
- * @lock: protects @kick_irq against kicks (from any context)
+ * @lock: protects @kick_irq (and in guard mode @halted) against kicks (from
+ *	any context)
  * @kick_irq: the Linux interrupt of the ARM -> PRU event while a boot with
  *	rpmsg runs, else 0
  * @kick: this boot's ARM -> PRU event
@@ -85,7 +116,14 @@
  * @vring_irq: the vring event's Linux interrupt while requested, else 0
  * @vring_mapped: the mapping of @vring_irq was made here (not by pru_rproc)
  * @rpmsg: this boot's firmware has a vdev
- * @held: the module holds a reference to itself for this boot
+ * @guard: the driver kicks by itself (TI's): @load is wrapped to refuse a
+ *	firmware its kick would crash on, @start and @stop to park @stale_irq
+ *	and halt the core before the vdev goes, @ti_kick to drop kicks then
+ * @ti_kick: (guard) TI's kick
+ * @stale_irq: (guard) the vring interrupt TI's pru_rproc remembers from its
+ *	last rpmsg boot and disposes of at each stop, 0 before any
+ * @held: an rpmsg boot runs (mainline's: the module holds a reference to
+ *	itself for it)
  * @halted: the subdevice's stop ran pru_rproc's stop already
  * @halt_ret: what that returned
  */
@@ -97,6 +135,7 @@ struct pru_kick {
 	int (*load)(struct rproc *rproc, const struct firmware *fw);
 	int (*start)(struct rproc *rproc);
 	int (*stop)(struct rproc *rproc);
+	void (*ti_kick)(struct rproc *rproc, int vqid);
 	spinlock_t lock;		/* kick_irq, against kicks */
 	unsigned int kick_irq;
 	struct prukit_pru_fw_irq kick;
@@ -104,6 +143,8 @@ struct pru_kick {
 	unsigned int vring_irq;
 	bool vring_mapped;
 	bool rpmsg;
+	bool guard;
+	unsigned int stale_irq;
 	bool held;
 	bool halted;
 	int halt_ret;
@@ -273,6 +314,9 @@ static int pru_kick_load(struct rproc *rproc, const struct firmware *fw)
 		}
 		k->vring = tree;
 	}
+	/* TI's pru_rproc requests the tree's vring interrupt itself */
+	if (k->guard)
+		return 0;
 	if (k->vring.event < 0) {
 		dev_err(k->dev, "%s has an rpmsg vdev, but no PRU -> ARM event: neither %pOF has a \"vring\" interrupt nor its .pru_irq_map routes an event to host 2..9\n",
 			rproc->firmware, k->dev->of_node);
@@ -405,7 +449,120 @@ static void pru_kick_subdev_stop(struct rproc_subdev *subdev, bool crashed)
 	}
 }
 
-/* Give a processor bound to pru-rproc its kick, unless its driver has one */
+/* The placeholders of TI's stale vring interrupts (guard), hwirq = virq */
+static struct irq_domain *pru_kick_parking;
+static const struct irq_domain_ops pru_kick_parking_ops;
+
+static bool pru_kick_parked(unsigned int virq)
+{
+	struct irq_data *d = irq_get_irq_data(virq);
+
+	return d && d->domain == pru_kick_parking;
+}
+
+/* Under rproc->lock: give @k's stale number a placeholder, if it has none */
+static void pru_kick_park(struct pru_kick *k)
+{
+	unsigned int virq = k->stale_irq;
+	int ret;
+
+	if (!virq || pru_kick_parked(virq))
+		return;
+	ret = irq_alloc_desc_at(virq, NUMA_NO_NODE);
+	if (ret == virq) {
+		ret = irq_domain_associate(pru_kick_parking, virq, virq);
+		if (!ret)
+			return;
+		irq_free_desc(virq);
+	}
+	dev_warn(k->dev, "%s's driver disposes of interrupt %u at every stop, which another driver may use now (%d): rebind it (%s) before unbinding that driver\n",
+		 k->rproc->name, virq, ret, dev_name(k->dev));
+	k->stale_irq = 0;
+}
+
+static void pru_kick_unpark(struct pru_kick *k)
+{
+	if (k->stale_irq && pru_kick_parked(k->stale_irq))
+		irq_dispose_mapping(k->stale_irq);
+	k->stale_irq = 0;
+}
+
+/* TI's kick, until the subdevice halted the core */
+static void pru_kick_guard_kick(struct rproc *rproc, int vqid)
+{
+	struct pru_kick *k;
+	unsigned long flags;
+
+	rcu_read_lock();
+	k = pru_kick_find(rproc);
+	if (k) {
+		spin_lock_irqsave(&k->lock, flags);
+		if (!k->halted)
+			k->ti_kick(rproc, vqid);
+		spin_unlock_irqrestore(&k->lock, flags);
+	}
+	rcu_read_unlock();
+}
+
+/* TI's start: an rpmsg boot requested the tree's vring interrupt afresh */
+static int pru_kick_guard_start(struct rproc *rproc)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	struct prukit_pru_fw_irq tree;
+	struct irq_domain *domain;
+	struct device_node *intc;
+	int ret;
+
+	ret = k->start(rproc);
+	if (ret || !k->rpmsg)
+		return ret;
+	k->held = true;
+	if (pru_kick_tree_vring(k, &tree) <= 0)
+		return 0;
+	pru_kick_unpark(k);
+	intc = pru_kick_intc(k);
+	domain = intc ? irq_find_host(intc) : NULL;
+	of_node_put(intc);
+	if (domain)
+		k->stale_irq = irq_find_mapping(domain, tree.event);
+	return 0;
+}
+
+/*
+ * TI's stop disposes of the vring interrupt it remembers: park the number.
+ * For an rpmsg boot, the subdevice ran it already, before the vdev went.
+ */
+static int pru_kick_guard_stop(struct rproc *rproc)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	unsigned long flags;
+	int ret;
+
+	ret = k->halted ? k->halt_ret : k->stop(rproc);
+	spin_lock_irqsave(&k->lock, flags);
+	k->halted = false;
+	spin_unlock_irqrestore(&k->lock, flags);
+	k->held = false;
+	pru_kick_park(k);
+	return ret;
+}
+
+/* First of a stop of an rpmsg boot: TI's stop halts the core, then the vdev goes */
+static void pru_kick_guard_subdev_stop(struct rproc_subdev *subdev, bool crashed)
+{
+	struct pru_kick *k = container_of(subdev, struct pru_kick, subdev);
+	unsigned long flags;
+
+	if (!k->held || k->halted)
+		return;
+	spin_lock_irqsave(&k->lock, flags);
+	k->halted = true;
+	spin_unlock_irqrestore(&k->lock, flags);
+	k->halt_ret = k->stop(k->rproc);
+	pru_kick_park(k);
+}
+
+/* Give a processor bound to pru-rproc its kick, or only the load check where it kicks */
 static void pru_kick_add(struct device *dev)
 {
 	struct rproc *rproc = dev_get_drvdata(dev);
@@ -417,19 +574,15 @@ static void pru_kick_add(struct device *dev)
 	list_for_each_entry(k, &pru_kicks, node)
 		if (k->rproc == rproc)
 			goto out;
-	if (prukit_pru_kick_choose(rproc->ops) == PRUKIT_PRU_KICK_ASIDE) {
-		dev_info(dev, "%s kicks by itself: rpmsg needs nothing of prukit here\n",
-			 rproc->name);
-		goto out;
-	}
 	k = kzalloc(sizeof(*k), GFP_KERNEL);
 	if (!k)
 		goto out;
 	get_device(&rproc->dev);
 	k->rproc = rproc;
 	k->dev = dev;
+	k->guard = prukit_pru_kick_choose(rproc->ops) == PRUKIT_PRU_KICK_ASIDE;
 	spin_lock_init(&k->lock);
-	k->subdev.stop = pru_kick_subdev_stop;
+	k->subdev.stop = k->guard ? pru_kick_guard_subdev_stop : pru_kick_subdev_stop;
 	list_add_tail_rcu(&k->node, &pru_kicks);
 
 	mutex_lock(&rproc->lock);
@@ -437,12 +590,23 @@ static void pru_kick_add(struct device *dev)
 	k->start = rproc->ops->start;
 	k->stop = rproc->ops->stop;
 	rproc->ops->load = pru_kick_load;
-	rproc->ops->start = pru_kick_start;
-	rproc->ops->stop = pru_kick_stop;
-	rproc->ops->kick = pru_kick_kick;
+	if (k->guard) {
+		k->ti_kick = rproc->ops->kick;
+		rproc->ops->start = pru_kick_guard_start;
+		rproc->ops->stop = pru_kick_guard_stop;
+		rproc->ops->kick = pru_kick_guard_kick;
+	} else {
+		rproc->ops->start = pru_kick_start;
+		rproc->ops->stop = pru_kick_stop;
+		rproc->ops->kick = pru_kick_kick;
+	}
 	rproc_add_subdev(rproc, &k->subdev);
 	mutex_unlock(&rproc->lock);
-	dev_info(dev, "%s: rpmsg kick and vring interrupt by prukit\n", rproc->name);
+	if (k->guard)
+		dev_info(dev, "%s kicks by itself: prukit only refuses rpmsg firmware it could not kick\n",
+			 rproc->name);
+	else
+		dev_info(dev, "%s: rpmsg kick and vring interrupt by prukit\n", rproc->name);
 out:
 	mutex_unlock(&pru_kicks_mutex);
 }
@@ -453,11 +617,13 @@ static void pru_kick_remove(struct pru_kick *k)
 	struct rproc *rproc = k->rproc;
 
 	mutex_lock(&rproc->lock);
-	rproc->ops->kick = NULL;
 	rproc->ops->load = k->load;
 	rproc->ops->start = k->start;
 	rproc->ops->stop = k->stop;
+	rproc->ops->kick = k->guard ? k->ti_kick : NULL;
 	rproc_remove_subdev(rproc, &k->subdev);
+	if (k->guard)
+		pru_kick_unpark(k);
 	mutex_unlock(&rproc->lock);
 	list_del_rcu(&k->node);
 	synchronize_rcu();
@@ -543,10 +709,22 @@ static int __init pru_kick_init(void)
 {
 	int ret;
 
+	pru_kick_parking = irq_domain_create_tree(NULL, &pru_kick_parking_ops, NULL);
+	if (!pru_kick_parking)
+		return -ENOMEM;
 	ret = bus_register_notifier(&platform_bus_type, &pru_kick_nb);
 	if (ret)
-		return ret;
-	return bus_for_each_dev(&platform_bus_type, NULL, NULL, pru_kick_existing);
+		goto remove_parking;
+	ret = bus_for_each_dev(&platform_bus_type, NULL, NULL, pru_kick_existing);
+	if (ret)
+		goto unregister_notifier;
+	return 0;
+
+unregister_notifier:
+	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
+remove_parking:
+	irq_domain_remove(pru_kick_parking);
+	return ret;
 }
 module_init(pru_kick_init);
 
@@ -559,5 +737,6 @@ static void __exit pru_kick_exit(void)
 	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
 		pru_kick_remove(k);
 	mutex_unlock(&pru_kicks_mutex);
+	irq_domain_remove(pru_kick_parking);
 }
 module_exit(pru_kick_exit);

@@ -192,10 +192,24 @@ check("P9_29 (mcasp0_fsx) for PRUKIT-WS281X-00A0: held by ocp:P9_29_pinmux" in o
       "status: P9_29 held by cape universal's helper, with the line that frees it", out)
 check("uboot_overlay_addr4=%s/PRUKIT-WS281X-00A0.dtbo (prukit enable)" % fw in out,
       "status: the enabled overlays of uEnv.txt", out)
+check("rpmsg_pru is the kernel's" not in out, "status: nothing of rpmsg_pru when none is loaded",
+      out)
 shutil.rmtree(os.path.join(sysd, "kernel"))
 rc, out, err = run("status")
 check(rc == 0 and "needs root and debugfs: sudo prukit status" in out,
       "status without pinctrl's debugfs: says the pin check needs root", out + err)
+# TI's own rpmsg_pru loaded (it has no parameters), then prukit's
+os.makedirs(os.path.join(sysd, "module", "rpmsg_pru"))
+rc, out, err = run("status")
+check(rc == 0 and "the loaded rpmsg_pru is the kernel's (TI's), not prukit's" in out and
+      "sudo rmmod rpmsg_pru && sudo modprobe rpmsg_pru" in out,
+      "status: TI's rpmsg_pru loaded: says so, and how to load prukit's", out + err)
+os.makedirs(os.path.join(sysd, "module", "rpmsg_pru", "parameters"))
+with open(os.path.join(sysd, "module", "rpmsg_pru", "parameters", "rx_queue_len"), "w") as f:
+    f.write("64\n")
+rc, out, err = run("status")
+check(rc == 0 and "rpmsg_pru is the kernel's" not in out,
+      "status: prukit's rpmsg_pru loaded: nothing to say", out + err)
 
 # ---- disable
 rc, out, err = run("disable", "ws281x")

@@ -45,6 +45,23 @@ board_path() {
 	done
 }
 
+# ti_pru_drivers - true on a kernel with TI's PRU drivers (5.10-ti: BeagleBoard's
+# whole kernel; 6.12-ti: TI's pru_rproc and pruss_intc on Debian's 6.12),
+# whose kick, vring interrupt and INTC differ from mainline's
+# (Documentation/kernels.rst).
+ti_pru_drivers() {
+	case ${PRUKIT_SERIES:-} in *-ti) return 0 ;; esac
+	return 1
+}
+
+# deny_sysfs_ops - true on a remoteproc core that refuses sysfs stores at
+# each write while a driver holds the core (5.10-ti's deny_sysfs_ops);
+# elsewhere (sysfs_read_only) the files are read-only, and a descriptor
+# opened before still writes.
+deny_sysfs_ops() {
+	[ "${PRUKIT_SERIES:-}" = 5.10-ti ]
+}
+
 # check_board_path - the check every board-path test makes first
 check_board_path() {
 	check "PRU0 and PRU1 are bound to the kernel's pru-rproc" board_path

@@ -185,6 +185,14 @@ def cmd_status(args):
     for d in rp:
         n = "/dev/" + os.path.basename(d)
         print("  %-14s %s%s" % ("rpmsg_pru", n, access_note(n)))
+    # TI's kernels have an rpmsg_pru of their own, of the same name: if it
+    # loaded before prukit's was installed (or depmod ran), it stays
+    if os.path.isdir(sysfs("module", "rpmsg_pru")) and \
+       not os.path.exists(sysfs("module", "rpmsg_pru", "parameters", "rx_queue_len")):
+        print("  %-14s the loaded rpmsg_pru is the kernel's (TI's), not prukit's: one opener "
+              "at a time, no counters.  Use prukit's: sudo rmmod rpmsg_pru && sudo modprobe "
+              "rpmsg_pru (if modinfo -n rpmsg_pru is not under updates/, sudo depmod -a "
+              "first)" % "rpmsg_pru")
 
     # ---- overlays
     section("Overlays:")
