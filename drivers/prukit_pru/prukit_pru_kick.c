@@ -632,24 +632,27 @@ static void pru_kick_remove(struct pru_kick *k)
 }
 
 /*
- * The PRU's driver is about to go.  5.10's rproc_del() shuts down only
- * processors it booted itself, and would leave a running rpmsg boot's
- * virtio device behind with this module's kick: shut it down first.
- * Later kernels' rproc_del() would do the same.
+ * The PRU's driver is about to go.  5.10's rproc_del() (mainline's and
+ * 5.10-ti's) shuts down only processors it booted itself: a core started
+ * through sysfs runs on with its driver gone, a running rpmsg boot's
+ * virtio device stays behind with this module's kick, and on 5.10-ti the
+ * module reference rproc_boot() took is never dropped (pru_rproc can no
+ * longer be unloaded).  Shut a running processor down first; later
+ * kernels' rproc_del() does the same, and then finds it offline.
  */
 static void pru_kick_unbind(struct device *dev)
 {
 	struct rproc *rproc = dev_get_drvdata(dev);
 	struct pru_kick *k;
-	bool live = false;
+	bool ours = false;
 
 	mutex_lock(&pru_kicks_mutex);
 	list_for_each_entry(k, &pru_kicks, node)
 		if (k->rproc == rproc)
-			live = k->held;
+			ours = true;
 	mutex_unlock(&pru_kicks_mutex);
-	if (live) {
-		dev_info(dev, "%s still runs %s over rpmsg: shutting it down\n", rproc->name,
+	if (ours && READ_ONCE(rproc->state) == RPROC_RUNNING) {
+		dev_info(dev, "%s still runs %s: shutting it down\n", rproc->name,
 			 rproc->firmware);
 		rproc_shutdown(rproc);
 	}
