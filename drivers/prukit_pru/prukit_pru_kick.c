@@ -122,8 +122,8 @@
  * @ti_kick: (guard) TI's kick
  * @stale_irq: (guard) the vring interrupt TI's pru_rproc remembers from its
  *	last rpmsg boot and disposes of at each stop, 0 before any
- * @held: an rpmsg boot runs (mainline's: the module holds a reference to
- *	itself for it)
+ * @held: an rpmsg boot runs, and the module holds a reference to itself
+ *	for it
  * @halted: the subdevice's stop ran pru_rproc's stop already
  * @halt_ret: what that returned
  */
@@ -516,6 +516,12 @@ static int pru_kick_guard_start(struct rproc *rproc)
 	ret = k->start(rproc);
 	if (ret || !k->rpmsg)
 		return ret;
+	/* the module stays until this boot's stop: its kick is called */
+	if (!try_module_get(THIS_MODULE)) {
+		k->stop(rproc);
+		pru_kick_park(k);
+		return -ENODEV;
+	}
 	k->held = true;
 	if (pru_kick_tree_vring(k, &tree) <= 0)
 		return 0;
@@ -542,8 +548,12 @@ static int pru_kick_guard_stop(struct rproc *rproc)
 	spin_lock_irqsave(&k->lock, flags);
 	k->halted = false;
 	spin_unlock_irqrestore(&k->lock, flags);
-	k->held = false;
 	pru_kick_park(k);
+	if (k->held) {
+		k->held = false;
+		/* the caller holds rproc->lock, which unloading waits for */
+		module_put(THIS_MODULE);
+	}
 	return ret;
 }
 
