@@ -38,6 +38,21 @@
 #endif
 
 /*
+ * v5.11: the rpmsg name service became an rpmsg device of its own, bound to
+ * the rpmsg_ns driver ("rpmsg: Turn name service into a stand alone
+ * driver"); it takes only the 40-byte announcement.  TI's kernels (5.10-ti
+ * on: "TI-HACK: rpmsg: introduce rpmsg_ns_msg_ext") give channels a
+ * description and take the support package's 72-byte form too.  Decided
+ * by the kernel's <linux/rpmsg.h> (the top-level Kbuild:
+ * PRUKIT_HAVE_RPMSG_DESC): prukit_pru converts the 72-byte form
+ * (prukit_pru_ns.c) where the name service is such a device and refuses it.
+ */
+#if IS_ENABLED(CONFIG_RPMSG) && !defined(PRUKIT_HAVE_RPMSG_DESC) && \
+	LINUX_VERSION_CODE >= KERNEL_VERSION(5, 11, 0)
+#define PRUKIT_PRU_NS_HOOK
+#endif
+
+/*
  * v6.3: vma->vm_flags became const, changed through vm_flags_set() and
  * vm_flags_clear() ("mm: introduce vma->vm_flags wrapper functions").
  * Decided by the kernel's <linux/mm.h> (the top-level Kbuild:

@@ -22,6 +22,12 @@ struct prukit_pru_fw_irq {
 
 int prukit_pru_fw_irq_map(const u8 *elf, size_t size, const u8 **entries,
 			  unsigned int *count);
+/* The longest .pru_irq_map prukit_pru_fw_ssp_irq_map() makes: 64 events */
+#define PRUKIT_PRU_FW_IRQ_MAP_MAX	(2 + 3 * 64)
+
+int prukit_pru_fw_ssp_irq_map(const u8 *elf, size_t size, u8 *map, size_t *len);
+u8 *prukit_pru_fw_add_irq_map(const u8 *elf, size_t size, const u8 *map, size_t map_len,
+			      size_t *copy_size);
 int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events);
 int prukit_pru_fw_rpmsg_events(const u8 *map, unsigned int count,
 			       struct prukit_pru_fw_irq *kick,

@@ -2,11 +2,13 @@
 /*
  * KUnit tests of prukit_pru_fw.c: the system events of a PRU firmware's
  * .pru_irq_map, from ELF images built here, well-formed and not; the events
- * rpmsg takes from a map; and whether prukit_pru_kick gives a PRU remote
- * processor its kick.
+ * rpmsg takes from a map; the map made of the older support package's
+ * interrupt resource, and the copy of a file with it added; and whether
+ * prukit_pru_kick gives a PRU remote processor its kick.
  */
 #include <kunit/test.h>
 #include <linux/elf.h>
+#include <linux/mm.h>
 #include <linux/remoteproc.h>
 #include <linux/string.h>
 
@@ -276,6 +278,222 @@ static void prukit_pru_kick_choice(struct kunit *test)
 	KUNIT_EXPECT_EQ(test, PRUKIT_PRU_KICK_ASIDE, prukit_pru_kick_choose(&ti));
 }
 
+/*
+ * An image as the support package's releases for TI's 4.x kernels build
+ * one: no .pru_irq_map; a resource table (at 160: a vdev, then the type 5
+ * interrupt resource, whose { event, channel } pairs are at data address
+ * 0x40); one loadable data segment (file offset 100 = address 0x40, 16
+ * bytes); sections null, .resource_table, .shstrtab at 400.
+ */
+#define SSP_SIZE	520
+#define SSP_RSC		160
+#define SSP_RSC_LEN	60
+#define SSP_INTS	(SSP_RSC + 28)
+#define SSP_PAIRS	100
+#define SSP_PAIRS_DA	0x40
+static const char ssp_strtab[] = "\0.resource_table\0.shstrtab";
+
+static size_t ssp_image(u8 *img, const u8 *pairs, u32 count, const u8 *channel_host)
+{
+	u8 *sh = img + 400;
+
+	memset(img, 0, SSP_SIZE);
+	memcpy(img, ELFMAG, SELFMAG);
+	img[EI_CLASS] = ELFCLASS32;
+	img[EI_DATA] = ELFDATA2LSB;
+	img[EI_VERSION] = EV_CURRENT;
+	put16(img + 16, ET_EXEC);
+	put16(img + 18, 144);		/* EM_TI_PRU */
+	put32(img + 28, 52);		/* e_phoff */
+	put32(img + 32, 400);		/* e_shoff */
+	put16(img + 42, 32);		/* e_phentsize */
+	put16(img + 44, 1);		/* e_phnum */
+	put16(img + 46, 40);		/* e_shentsize */
+	put16(img + 48, 3);		/* e_shnum */
+	put16(img + 50, 2);		/* e_shstrndx */
+	/* the data segment */
+	put32(img + 52, PT_LOAD);
+	put32(img + 52 + 4, SSP_PAIRS);
+	put32(img + 52 + 8, SSP_PAIRS_DA);
+	put32(img + 52 + 12, SSP_PAIRS_DA);
+	put32(img + 52 + 16, 16);
+	put32(img + 52 + 20, 16);
+	put32(img + 52 + 24, PF_R | PF_W);
+	memcpy(img + SSP_PAIRS, pairs, 2 * count);
+	/* the resource table: version 1, two resources at 24 and 28 */
+	put32(img + SSP_RSC, 1);
+	put32(img + SSP_RSC + 4, 2);
+	put32(img + SSP_RSC + 16, 24);
+	put32(img + SSP_RSC + 20, 28);
+	put32(img + SSP_RSC + 24, 3);	/* a vdev: only its type is read */
+	put32(img + SSP_INTS, 5);	/* TYPE_CUSTOM */
+	put32(img + SSP_INTS + 4, 1);	/* TYPE_PRU_INTS */
+	put32(img + SSP_INTS + 8, 20);
+	memcpy(img + SSP_INTS + 14, channel_host, 10);
+	put32(img + SSP_INTS + 24, count);
+	put32(img + SSP_INTS + 28, SSP_PAIRS_DA);
+	memcpy(img + 240, ssp_strtab, sizeof(ssp_strtab));
+	put32(sh + 40, 1);		/* .resource_table */
+	put32(sh + 40 + 16, SSP_RSC);
+	put32(sh + 40 + 20, SSP_RSC_LEN);
+	put32(sh + 80, 17);		/* .shstrtab */
+	put32(sh + 80 + 16, 240);
+	put32(sh + 80 + 20, sizeof(ssp_strtab));
+	return SSP_SIZE;
+}
+
+/* PRU0's routing in the support package's RPMsg echo example */
+static const u8 ssp_pairs[] = { 16, 2, 17, 0 };
+static const u8 ssp_hosts[10] = { 0, 255, 2, 255, 255, 255, 255, 255, 255, 255 };
+
+static void prukit_pru_fw_ssp_map(struct kunit *test)
+{
+	/* the event to host 0 (the kick) first, then the one to the ARM */
+	static const u8 want[] = { 0, 2, 17, 0, 0, 16, 2, 2 };
+	static const u8 pairs3[] = { 20, 5, 16, 2, 19, 1 };
+	static const u8 hosts3[10] = { 255, 1, 2, 255, 255, 7, 255, 255, 255, 255 };
+	static const u8 want3[] = { 0, 3, 19, 1, 1, 20, 5, 7, 16, 2, 2 };
+	u8 *img = kunit_kzalloc(test, SSP_SIZE, GFP_KERNEL);
+	u8 map[PRUKIT_PRU_FW_IRQ_MAP_MAX];
+	const u8 *entries;
+	unsigned int count;
+	size_t size, len;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_irq_map(img, size, &entries, &count));
+	KUNIT_EXPECT_NULL(test, entries);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	KUNIT_ASSERT_EQ(test, len, sizeof(want));
+	KUNIT_EXPECT_EQ(test, 0, memcmp(map, want, sizeof(want)));
+
+	/* three events, the resource's order kept within each group */
+	size = ssp_image(img, pairs3, 3, hosts3);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	KUNIT_ASSERT_EQ(test, len, sizeof(want3));
+	KUNIT_EXPECT_EQ(test, 0, memcmp(map, want3, sizeof(want3)));
+
+	/* no events: an empty map */
+	size = ssp_image(img, ssp_pairs, 0, ssp_hosts);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	KUNIT_EXPECT_EQ(test, len, 2);
+	KUNIT_EXPECT_EQ(test, map[1], 0);
+}
+
+static void prukit_pru_fw_ssp_bad(struct kunit *test)
+{
+	static const u8 no_host[10] = { 255, 255, 2, 255, 255, 255, 255, 255, 255, 255 };
+	static const u8 host10[10] = { 10, 255, 2, 255, 255, 255, 255, 255, 255, 255 };
+	static const u8 ev64[] = { 64, 2 };
+	static const u8 ch10[] = { 16, 10 };
+	u8 *img = kunit_kzalloc(test, SSP_SIZE, GFP_KERNEL);
+	u8 map[PRUKIT_PRU_FW_IRQ_MAP_MAX];
+	size_t size, len;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	/* no resource of the kind: a vdev only, another sub type, no table */
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_RSC + 4, 1);
+	KUNIT_EXPECT_EQ(test, -ENOENT, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_INTS + 4, 2);
+	KUNIT_EXPECT_EQ(test, -ENOENT, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + 400 + 40, 17);	/* .resource_table renamed .shstrtab */
+	KUNIT_EXPECT_EQ(test, -ENOENT, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+
+	/* a channel without a host, a host above 9, an event above 63, channel 10 */
+	size = ssp_image(img, ssp_pairs, 2, no_host);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, host10);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ev64, 1, ssp_hosts);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ch10, 1, ssp_hosts);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+
+	/* more than 64 events; pairs past the segment's file bytes or before it */
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_INTS + 24, 65);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	put32(img + SSP_INTS + 24, 9);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_INTS + 28, SSP_PAIRS_DA - 1);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	put32(img + SSP_INTS + 28, 0xfffffffe);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	/* the pairs in code (an executable segment) are not data */
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + 52 + 24, PF_R | PF_X);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+
+	/* the table: another version, a resource or an offset beyond it */
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_RSC, 2);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_RSC + 20, SSP_RSC_LEN - 4);
+	put32(img + SSP_RSC + SSP_RSC_LEN - 4, 5);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	put32(img + SSP_RSC + 20, SSP_RSC_LEN - 3);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_RSC + 4, 20);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	/* a resource body shorter than the support package's */
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	put32(img + SSP_INTS + 8, 19);
+	KUNIT_EXPECT_EQ(test, -EINVAL, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+}
+
+static void prukit_pru_fw_add_map(struct kunit *test)
+{
+	u8 *img = kunit_kzalloc(test, SSP_SIZE, GFP_KERNEL);
+	u8 map[PRUKIT_PRU_FW_IRQ_MAP_MAX], again[PRUKIT_PRU_FW_IRQ_MAP_MAX];
+	const u8 *entries;
+	unsigned int count;
+	size_t size, len, len2, copy_size;
+	u64 ev;
+	u8 *copy;
+
+	KUNIT_ASSERT_NOT_NULL(test, img);
+	size = ssp_image(img, ssp_pairs, 2, ssp_hosts);
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_ssp_irq_map(img, size, map, &len));
+	copy = prukit_pru_fw_add_irq_map(img, size, map, len, &copy_size);
+	KUNIT_ASSERT_NOT_NULL(test, copy);
+	KUNIT_EXPECT_GT(test, copy_size, size);
+	/* the file's bytes stay where they were but for e_shoff and e_shnum */
+	KUNIT_EXPECT_EQ(test, 0, memcmp(copy, img, 32));
+	KUNIT_EXPECT_EQ(test, 0, memcmp(copy + 36, img + 36, 12));
+	KUNIT_EXPECT_EQ(test, 0, memcmp(copy + 50, img + 50, size - 50));
+	/* the map reads back as a .pru_irq_map, exactly */
+	KUNIT_ASSERT_EQ(test, 0, prukit_pru_fw_irq_map(copy, copy_size, &entries, &count));
+	KUNIT_ASSERT_NOT_NULL(test, entries);
+	KUNIT_EXPECT_EQ(test, count, 2);
+	KUNIT_EXPECT_EQ(test, 0, memcmp(entries, map + 2, 6));
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_events(copy, copy_size, &ev));
+	KUNIT_EXPECT_EQ(test, ev, BIT_ULL(16) | BIT_ULL(17));
+	/* and the resource table is still found, the same */
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_ssp_irq_map(copy, copy_size, again, &len2));
+	KUNIT_EXPECT_EQ(test, len, len2);
+	KUNIT_EXPECT_EQ(test, 0, memcmp(map, again, len));
+	kvfree(copy);
+
+	/* an empty map (a header only) is a map too */
+	map[1] = 0;
+	copy = prukit_pru_fw_add_irq_map(img, size, map, 2, &copy_size);
+	KUNIT_ASSERT_NOT_NULL(test, copy);
+	KUNIT_EXPECT_EQ(test, 0, prukit_pru_fw_irq_map(copy, copy_size, &entries, &count));
+	KUNIT_EXPECT_NOT_NULL(test, entries);
+	KUNIT_EXPECT_EQ(test, count, 0);
+	kvfree(copy);
+
+	/* a file without a section table cannot name a section: no copy */
+	put16(img + 48, 0);
+	KUNIT_EXPECT_NULL(test, prukit_pru_fw_add_irq_map(img, size, map, len, &copy_size));
+}
+
 static struct kunit_case prukit_pru_fw_cases[] = {
 	KUNIT_CASE(prukit_pru_fw_rpmsg),
 	KUNIT_CASE(prukit_pru_fw_no_map_no_rpmsg),
@@ -284,6 +502,9 @@ static struct kunit_case prukit_pru_fw_cases[] = {
 	KUNIT_CASE(prukit_pru_fw_no_map),
 	KUNIT_CASE(prukit_pru_fw_events_above_63),
 	KUNIT_CASE(prukit_pru_fw_malformed),
+	KUNIT_CASE(prukit_pru_fw_ssp_map),
+	KUNIT_CASE(prukit_pru_fw_ssp_bad),
+	KUNIT_CASE(prukit_pru_fw_add_map),
 	{}
 };
 

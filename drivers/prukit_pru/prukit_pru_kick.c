@@ -94,6 +94,7 @@
 
 #include "compat.h"
 #include "prukit_pru_fw.h"
+#include "prukit_pru_ns.h"
 
 /* The PRU remoteproc driver's name, TI's and mainline's */
 #define PRU_KICK_RPROC_DRIVER	"pru-rproc"
@@ -104,7 +105,8 @@
  * @rproc: the processor (a reference is held)
  * @dev: its PRU core's platform device
  * @subdev: stops the vring interrupt before the vdev stops
- * @load: pru_rproc's load operation
+ * @parse_fw: pru_rproc's parse_fw operation
+ * @load: its load operation
  * @start: its start
  * @stop: its stop
  * @lock: protects @kick_irq (and in guard mode @halted) against kicks (from
@@ -126,12 +128,19 @@
  *	for it
  * @halted: the subdevice's stop ran pru_rproc's stop already
  * @halt_ret: what that returned
+ * @fw_copy: a copy of a firmware with the .pru_irq_map made of its type 5
+ *	resource, kept while pru_rproc may read the map in it (until its
+ *	start, which forgets it)
+ * @boot_elf: this boot's firmware as pru_rproc parsed it: @fw_copy, or
+ *	NULL for the file itself
+ * @boot_size: @boot_elf's size
  */
 struct pru_kick {
 	struct list_head node;
 	struct rproc *rproc;
 	struct device *dev;
 	struct rproc_subdev subdev;
+	int (*parse_fw)(struct rproc *rproc, const struct firmware *fw);
 	int (*load)(struct rproc *rproc, const struct firmware *fw);
 	int (*start)(struct rproc *rproc);
 	int (*stop)(struct rproc *rproc);
@@ -148,6 +157,9 @@ struct pru_kick {
 	bool held;
 	bool halted;
 	int halt_ret;
+	u8 *fw_copy;
+	const u8 *boot_elf;
+	size_t boot_size;
 };
 
 /* Changes under pru_kicks_mutex; read under RCU (kicks come from any context) */
@@ -162,6 +174,29 @@ static struct pru_kick *pru_kick_find(struct rproc *rproc)
 		if (k->rproc == rproc)
 			return k;
 	return NULL;
+}
+
+/**
+ * prukit_pru_kick_owns() - whether a device belongs to a PRU processor
+ *	this module knows
+ * @dev: the device: the processor's, or one below it (its virtio device,
+ *	an rpmsg device of that)
+ *
+ * Return: true if @dev or one of its parents is such a processor's
+ * device or its PRU core's platform device.
+ */
+bool prukit_pru_kick_owns(struct device *dev)
+{
+	struct pru_kick *k;
+	bool owns = false;
+
+	rcu_read_lock();
+	for (; dev && !owns; dev = dev->parent)
+		list_for_each_entry_rcu(k, &pru_kicks, node)
+			if (dev == &k->rproc->dev || dev == k->dev)
+				owns = true;
+	rcu_read_unlock();
+	return owns;
 }
 
 /* Called by remoteproc's operations, which only installed processors reach */
@@ -264,6 +299,66 @@ static void pru_kick_subdev_last(struct pru_kick *k)
 	rproc_add_subdev(k->rproc, &k->subdev);
 }
 
+/* pru_rproc's start forgot the map it parsed: the copy can go */
+static void pru_kick_forget_copy(struct pru_kick *k)
+{
+	kvfree(k->fw_copy);
+	k->fw_copy = NULL;
+	k->boot_elf = NULL;
+}
+
+/*
+ * A firmware built with the PRU Software Support Package's releases for
+ * TI's 4.x kernels has its INTC routing in a type 5 resource and no
+ * .pru_irq_map, which every later PRU driver needs for rpmsg (TI's kick
+ * dereferences NULL without one, mainline's routes nothing).  pru_rproc
+ * parses a copy of it with the map made of that resource added
+ * (prukit_pru_fw_ssp_irq_map()); its start maps the events from the copy,
+ * as from any map.  remoteproc still warns "unsupported resource 5".
+ */
+static int pru_kick_parse_fw(struct rproc *rproc, const struct firmware *fw)
+{
+	struct pru_kick *k = pru_kick_of(rproc);
+	struct firmware view = {};
+	u8 map[PRUKIT_PRU_FW_IRQ_MAP_MAX];
+	const u8 *entries;
+	unsigned int count;
+	size_t len;
+	u8 *copy;
+	int ret;
+
+	k->boot_elf = NULL;
+	ret = prukit_pru_fw_irq_map(fw->data, fw->size, &entries, &count);
+	/* a map of its own (or a file pru_rproc judges itself) */
+	if (ret || entries)
+		return k->parse_fw(rproc, fw);
+	ret = prukit_pru_fw_ssp_irq_map(fw->data, fw->size, map, &len);
+	if (ret == -ENOENT)
+		return k->parse_fw(rproc, fw);
+	if (ret) {
+		dev_err(k->dev, "%s: its interrupt resource (type 5, TI's 4.x support package) is malformed\n",
+			rproc->firmware);
+		return ret;
+	}
+	copy = prukit_pru_fw_add_irq_map(fw->data, fw->size, map, len, &view.size);
+	if (!copy)
+		return -ENOMEM;
+	view.data = copy;
+	ret = k->parse_fw(rproc, &view);
+	if (ret) {
+		kvfree(copy);
+		return ret;
+	}
+	/* pru_rproc reads the map in this copy now, no longer in an older one */
+	kvfree(k->fw_copy);
+	k->fw_copy = copy;
+	k->boot_elf = copy;
+	k->boot_size = view.size;
+	dev_info(k->dev, "%s has no .pru_irq_map: its type 5 interrupt resource routes %u events instead\n",
+		 rproc->firmware, map[1]);
+	return 0;
+}
+
 static int pru_kick_load(struct rproc *rproc, const struct firmware *fw)
 {
 	struct pru_kick *k = pru_kick_of(rproc);
@@ -280,7 +375,11 @@ static int pru_kick_load(struct rproc *rproc, const struct firmware *fw)
 	if (!k->rpmsg)
 		return 0;
 
-	ret = prukit_pru_fw_irq_map(fw->data, fw->size, &map, &count);
+	/* the map pru_rproc parsed: the file's, or the one made of its resource */
+	if (k->boot_elf)
+		ret = prukit_pru_fw_irq_map(k->boot_elf, k->boot_size, &map, &count);
+	else
+		ret = prukit_pru_fw_irq_map(fw->data, fw->size, &map, &count);
 	if (ret) {
 		dev_err(k->dev, "%s: its .pru_irq_map cannot be read\n", rproc->firmware);
 		return ret;
@@ -352,6 +451,7 @@ static int pru_kick_start(struct rproc *rproc)
 	int ret;
 
 	ret = k->start(rproc);
+	pru_kick_forget_copy(k);
 	if (ret || !k->rpmsg)
 		return ret;
 	/* the module stays until this boot's stop */
@@ -514,6 +614,7 @@ static int pru_kick_guard_start(struct rproc *rproc)
 	int ret;
 
 	ret = k->start(rproc);
+	pru_kick_forget_copy(k);
 	if (ret || !k->rpmsg)
 		return ret;
 	/* the module stays until this boot's stop: its kick is called */
@@ -596,9 +697,11 @@ static void pru_kick_add(struct device *dev)
 	list_add_tail_rcu(&k->node, &pru_kicks);
 
 	mutex_lock(&rproc->lock);
+	k->parse_fw = rproc->ops->parse_fw;
 	k->load = rproc->ops->load;
 	k->start = rproc->ops->start;
 	k->stop = rproc->ops->stop;
+	rproc->ops->parse_fw = pru_kick_parse_fw;
 	rproc->ops->load = pru_kick_load;
 	if (k->guard) {
 		k->ti_kick = rproc->ops->kick;
@@ -627,6 +730,7 @@ static void pru_kick_remove(struct pru_kick *k)
 	struct rproc *rproc = k->rproc;
 
 	mutex_lock(&rproc->lock);
+	rproc->ops->parse_fw = k->parse_fw;
 	rproc->ops->load = k->load;
 	rproc->ops->start = k->start;
 	rproc->ops->stop = k->stop;
@@ -638,6 +742,8 @@ static void pru_kick_remove(struct pru_kick *k)
 	list_del_rcu(&k->node);
 	synchronize_rcu();
 	put_device(&rproc->dev);
+	/* a boot that failed before pru_rproc's start left a copy */
+	kvfree(k->fw_copy);
 	kfree(k);
 }
 
@@ -718,6 +824,16 @@ static int pru_kick_existing(struct device *dev, void *data)
 	return 0;
 }
 
+static void pru_kick_remove_all(void)
+{
+	struct pru_kick *k, *tmp;
+
+	mutex_lock(&pru_kicks_mutex);
+	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
+		pru_kick_remove(k);
+	mutex_unlock(&pru_kicks_mutex);
+}
+
 static int __init pru_kick_init(void)
 {
 	int ret;
@@ -725,9 +841,12 @@ static int __init pru_kick_init(void)
 	pru_kick_parking = irq_domain_create_tree(NULL, &pru_kick_parking_ops, NULL);
 	if (!pru_kick_parking)
 		return -ENOMEM;
-	ret = bus_register_notifier(&platform_bus_type, &pru_kick_nb);
+	ret = prukit_pru_ns_init();
 	if (ret)
 		goto remove_parking;
+	ret = bus_register_notifier(&platform_bus_type, &pru_kick_nb);
+	if (ret)
+		goto exit_ns;
 	ret = bus_for_each_dev(&platform_bus_type, NULL, NULL, pru_kick_existing);
 	if (ret)
 		goto unregister_notifier;
@@ -735,6 +854,9 @@ static int __init pru_kick_init(void)
 
 unregister_notifier:
 	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
+	pru_kick_remove_all();
+exit_ns:
+	prukit_pru_ns_exit();
 remove_parking:
 	irq_domain_remove(pru_kick_parking);
 	return ret;
@@ -743,13 +865,9 @@ module_init(pru_kick_init);
 
 static void __exit pru_kick_exit(void)
 {
-	struct pru_kick *k, *tmp;
-
 	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
-	mutex_lock(&pru_kicks_mutex);
-	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
-		pru_kick_remove(k);
-	mutex_unlock(&pru_kicks_mutex);
+	pru_kick_remove_all();
+	prukit_pru_ns_exit();
 	irq_domain_remove(pru_kick_parking);
 }
 module_exit(pru_kick_exit);

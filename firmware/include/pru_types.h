@@ -14,6 +14,13 @@
  *
  * (pru-gcc accepts the initialised flexible array; prukit's own intc_map_0.h
  * and intc_map_1.h use PRUKIT_IRQ_MAP() from <prukit/irq_map.h>.)
+ *
+ * Also the older form, of the support package's releases for TI's 4.x
+ * kernels: a TYPE_CUSTOM entry of the resource table (<rsc_types.h>) whose
+ * sub type TYPE_PRU_INTS holds struct fw_rsc_custom_ints, which points to
+ * the program's struct ch_map array.  No kernel since reads it; prukit_pru
+ * turns it into the map above when a firmware has no .pru_irq_map
+ * (Documentation/rpmsg-kick.rst), so programs that keep that form run.
  */
 #ifndef PRUKIT_COMPAT_PRU_TYPES_H
 #define PRUKIT_COMPAT_PRU_TYPES_H
@@ -31,6 +38,25 @@ struct pru_irq_rsc {
 	uint8_t type;		/* 0 */
 	uint8_t num_evts;
 	struct pruss_int_map pru_intc_map[];
+};
+
+/* The older form: the sub type of the TYPE_CUSTOM resource */
+#define TYPE_PRU_INTS		1
+
+/* A channel the program does not route to a host */
+#define HOST_UNUSED		255
+
+/* One system event routed to an INTC channel */
+struct ch_map {
+	uint8_t evt;		/* system event 0..63 */
+	uint8_t ch;		/* channel 0..9 */
+};
+
+struct fw_rsc_custom_ints {
+	uint16_t version;		/* 0 */
+	uint8_t channel_host[10];	/* each channel's host, HOST_UNUSED for none */
+	uint32_t num_evts;		/* entries of event_channel */
+	struct ch_map *event_channel;	/* the program's array, in its data RAM */
 };
 
 #endif /* PRUKIT_COMPAT_PRU_TYPES_H */

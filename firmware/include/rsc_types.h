@@ -8,10 +8,11 @@
  * reads (include/linux/remoteproc.h documents it); prukit's own firmware uses
  * <prukit/resource_table.h> and <prukit/rpmsg.h> instead.  What is here:
  * the table header, carveout/devmem/trace entries, the vdev entry and its
- * vrings, and the TYPE_* values.  Not here: the custom entries of TI's 4.x
- * kernels (struct fw_rsc_custom, TYPE_CUSTOM), which no kernel prukit
- * supports reads; the interrupt map goes into the .pru_irq_map section
- * instead (<pru_types.h>).  See Documentation/firmware-rpmsg.rst.
+ * vrings, the TYPE_* values, and the custom entry of the releases for TI's
+ * 4.x kernels (struct fw_rsc_custom, TYPE_CUSTOM), which held their
+ * interrupt map: no kernel since reads it, prukit_pru does (<pru_types.h>).
+ * New programs put the map into the .pru_irq_map section instead.  See
+ * Documentation/firmware-rpmsg.rst.
  */
 #ifndef PRUKIT_COMPAT_RSC_TYPES_H
 #define PRUKIT_COMPAT_RSC_TYPES_H
@@ -26,6 +27,7 @@
 #define TYPE_DEVMEM		1
 #define TYPE_TRACE		2
 #define TYPE_VDEV		3
+#define TYPE_CUSTOM		5	/* TI's 4.x kernels only */
 
 /* "Linux chooses": Linux writes the address it allocated over this */
 #define FW_RSC_ADDR_ANY		0xffffffffu
@@ -99,6 +101,19 @@ struct fw_rsc_vdev {
 	struct fw_rsc_vdev_vring vring[0];
 };
 
+/* TI's 4.x kernels: a resource of a kind the sub type names (TYPE_PRU_INTS) */
+union fw_custom {
+	struct fw_rsc_custom_ints pru_ints;
+};
+
+struct fw_rsc_custom {
+	uint32_t type;			/* TYPE_CUSTOM */
+	uint32_t sub_type;		/* TYPE_PRU_INTS */
+	uint32_t rsc_size;		/* sizeof the union's member */
+	union fw_custom rsc;
+};
+
+static_assert(sizeof(struct fw_rsc_custom) == 32, "fw_rsc_custom is 32 bytes");
 static_assert(sizeof(struct resource_table) == 16, "resource_table is 16 bytes");
 static_assert(sizeof(struct fw_rsc_vdev_vring) == 20, "fw_rsc_vdev_vring is 20 bytes");
 static_assert(sizeof(struct fw_rsc_vdev) == 28, "fw_rsc_vdev is 28 bytes");

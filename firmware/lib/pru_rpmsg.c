@@ -134,6 +134,39 @@ int16_t pru_rpmsg_send(struct pru_rpmsg_transport *transport, uint32_t src,
 	return pru_rpmsg_ret(prukit_rpmsg_send(&transport->rpmsg, dst, data, len));
 }
 
+#ifdef PRUKIT_SSP_NS_DESC
+/*
+ * Built with -DPRUKIT_SSP_NS_DESC (prukit's test firmware only): announce
+ * with the 72-byte message of the support package's releases for TI's 4.x
+ * kernels, desc included, as firmware built with them does, so that the
+ * kernel side can be tested with it.  It is not announced again after a
+ * vdev reset: neither was it by that library.
+ */
+struct prukit_ssp_ns_desc_msg {
+	char name[PRUKIT_RPMSG_NAME_SIZE];
+	char desc[PRUKIT_RPMSG_NAME_SIZE];
+	uint32_t addr;
+	uint32_t flags;
+};
+
+static_assert(sizeof(struct prukit_ssp_ns_desc_msg) == 72, "the 72-byte name service message");
+
+static int ssp_ns_desc_send(struct prukit_rpmsg *rp, const char *name, const char *desc,
+			    uint32_t port, uint32_t flags)
+{
+	struct prukit_ssp_ns_desc_msg msg;
+
+	memset(&msg, 0, sizeof(msg));
+	strncpy(msg.name, name, sizeof(msg.name) - 1);
+	strncpy(msg.desc, desc, sizeof(msg.desc) - 1);
+	msg.addr = port;
+	msg.flags = flags;
+	rp->port = port;
+	rp->ns = NULL;
+	return prukit_rpmsg_send(rp, PRUKIT_RPMSG_NS_ADDR, &msg, sizeof(msg));
+}
+#endif
+
 /* Parenthesised: pru_rpmsg_channel is also a macro (both argument lists). */
 int16_t (pru_rpmsg_channel)(enum pru_rpmsg_ns_flags flags,
 			    struct pru_rpmsg_transport *transport, const char *name,
@@ -144,9 +177,12 @@ int16_t (pru_rpmsg_channel)(enum pru_rpmsg_ns_flags flags,
 	unsigned int i;
 	int ret;
 
-	(void)desc;		/* only the 72-byte form carries it */
 	if (!transport_ready(transport))
 		return PRU_RPMSG_INVALID_VRING;
+#ifdef PRUKIT_SSP_NS_DESC
+	return pru_rpmsg_ret(ssp_ns_desc_send(rp, name, desc, port, flags));
+#endif
+	(void)desc;		/* only the 72-byte form carries it */
 	/* at most 32 bytes, the rest zero (no terminator if it is 32 long) */
 	for (i = 0; i < sizeof(msg.name); i++) {
 		msg.name[i] = *name;
