@@ -15,10 +15,14 @@
  *
  * remoteproc gives each processor its own copy of the operations
  * (rproc_alloc() duplicates them, and pru_rproc itself sets ->load and
- * ->parse_fw in that copy): this sets ->kick and wraps ->load, ->start and
- * ->stop there, and adds a subdevice.  For each boot of a firmware with a
- * vdev:
+ * ->parse_fw in that copy): this sets ->kick and wraps ->parse_fw, ->load,
+ * ->start and ->stop there, and adds a subdevice.  For each boot of a
+ * firmware with a vdev:
  *
+ *  - parse_fw (every boot, both modes below): a firmware with no
+ *    .pru_irq_map but the older support package's type 5 interrupt
+ *    resource is parsed as a copy with that resource as its map
+ *    (pru_kick_parse_fw()).
  *  - load: the firmware's .pru_irq_map names the events.  Its first entry,
  *    routed to host 0 or 1, is the ARM -> PRU event (TI's pru_rproc raises
  *    the same one); the PRU -> ARM ("vring") event is the node's "vring"
@@ -349,7 +353,12 @@ static int pru_kick_parse_fw(struct rproc *rproc, const struct firmware *fw)
 		kvfree(copy);
 		return ret;
 	}
-	/* pru_rproc reads the map in this copy now, no longer in an older one */
+	/*
+	 * pru_rproc reads the map in this copy now, no longer in an older one.
+	 * (It keeps the pointer after a boot that fails before its start, as
+	 * it keeps one into the released file of any firmware then; the copy
+	 * stays until the next start, or until the module goes.)
+	 */
 	kvfree(k->fw_copy);
 	k->fw_copy = copy;
 	k->boot_elf = copy;

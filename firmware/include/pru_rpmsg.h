@@ -18,10 +18,11 @@
  * full, with the edits that port a Cookbook program to pru-gcc):
  *
  *  - pru_rpmsg_channel() announces the 40-byte name service message, which
- *    every kernel accepts; desc is not sent (the support package's 72-byte
- *    message, which carries it, is refused by mainline Linux: "malformed ns
- *    msg (72)").  The later form without desc, pru_rpmsg_channel(flags,
- *    transport, name, port), works too.
+ *    every kernel accepts; desc is not sent (the support package's older
+ *    72-byte message, which carries it, is refused by mainline Linux,
+ *    "malformed ns msg (72)", unless prukit_pru converts it).  The later
+ *    form without desc, pru_rpmsg_channel(flags, transport, name, port),
+ *    works too.
  *  - The events must be this core's: 16 (to the ARM) and 17 (from the ARM)
  *    on PRU0, 18 and 19 on PRU1; others give PRU_RPMSG_INVALID_EVENT.
  *  - pru_rpmsg_init() waits for VIRTIO_CONFIG_S_DRIVER_OK itself (programs

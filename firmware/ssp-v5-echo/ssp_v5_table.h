@@ -11,6 +11,7 @@
  * including header defines, for its core:
  *   SSP_TO_ARM_EVT, SSP_TO_ARM_CH     PRU -> ARM event and its channel (host = channel)
  *   SSP_FROM_ARM_EVT, SSP_FROM_ARM_CH ARM -> PRU event and its channel (host 0 or 1)
+ *   SSP_CHANNEL_HOST                  each channel's host, HOST_UNUSED for none
  * The pairs are listed PRU -> ARM first, as the support package's echo
  * example lists them: the resource has no order, and the kernel side must
  * not take the first pair for the kick.
@@ -44,9 +45,6 @@ struct my_resource_table {
 	struct fw_rsc_custom pru_ints;
 };
 
-/* each channel's host: the two channels to themselves, the rest unused */
-#define SSP_HOST(ch)	((ch) == SSP_TO_ARM_CH || (ch) == SSP_FROM_ARM_CH ? (ch) : HOST_UNUSED)
-
 struct my_resource_table PRUKIT_SSP_RESOURCE_TABLE PRUKIT_RSC_SECTION = {
 	.base = { .ver = 1, .num = 2, .reserved = { 0, 0 } },
 	.offset = {
@@ -67,10 +65,7 @@ struct my_resource_table PRUKIT_SSP_RESOURCE_TABLE PRUKIT_RSC_SECTION = {
 		.rsc_size = sizeof(struct fw_rsc_custom_ints),
 		.rsc.pru_ints = {
 			.version = 0,
-			.channel_host = {
-				SSP_HOST(0), SSP_HOST(1), SSP_HOST(2), SSP_HOST(3), SSP_HOST(4),
-				SSP_HOST(5), SSP_HOST(6), SSP_HOST(7), SSP_HOST(8), SSP_HOST(9),
-			},
+			.channel_host = SSP_CHANNEL_HOST,
 			.num_evts = sizeof(pru_intc_map) / sizeof(struct ch_map),
 			.event_channel = pru_intc_map,
 		},
