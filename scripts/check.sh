@@ -27,13 +27,15 @@ firmware_check() {
 
 # The harness checks itself: step() (selftest.sh), that a driver's
 # folder is found by the builds, make install and the harnesses
-# (discovery.sh), and that a board without pru-gcc is not sent into a GCC
-# bootstrap, nor overlays a kernel source (board-build.sh).
+# (discovery.sh), that a board without pru-gcc is not sent into a GCC
+# bootstrap, nor overlays a kernel source (board-build.sh), and that the VM
+# splat check reads the kernel's lines, not the tests' (splat.sh).
 harness_check() {
 	local rc=0
 	tests/harness/selftest.sh || rc=1
 	tests/harness/discovery.sh || rc=1
 	tests/harness/board-build.sh || rc=1
+	tests/harness/splat.sh || rc=1
 	return $rc
 }
 
@@ -57,7 +59,7 @@ qemu_check() {
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
-step harness 55 harness_check				# [59]
+step harness 60 harness_check				# [65]
 step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
 # Debian's three kernels as shipped and as a board's (with the kernel's
 # own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU

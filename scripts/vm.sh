@@ -74,8 +74,11 @@ VMDIR=$PRUKIT_TOP/tests/vm
 # per display bind/unbind cycle to it).
 # log_buf_len=1M: the tests and the splat check read the whole kernel log
 # with dmesg, and some kernels keep little of it (5.10-ti's build: 16 KiB,
-# which a boot of every test overflows; Debian's: 128 KiB).
-cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_len=1M"
+# which a boot of every test overflows; Debian's: 128 KiB).  printk.time=1:
+# every kernel line carries its timestamp (5.10-ti's build has no
+# PRINTK_TIME), which is how the splat check tells the kernel's lines from
+# what the tests print on the same console.
+cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_len=1M printk.time=1"
 cmdline+=" slub_debug=U,kmalloc-*,kernfs_node_cache stack_depot_disable=1"
 cmdline+=${PRUKIT_VM_APPEND:+ $PRUKIT_VM_APPEND}
 machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
@@ -354,7 +357,12 @@ boot() {
 kernel_log_clean() {
 	local dir=$1 out=$2 which=${3:-} hits
 	local log
-	log=$(cat "$dir/console.log" "$out/dmesg.txt" 2>/dev/null | tr -d '\r')
+	# Only what the kernel wrote: its lines carry a timestamp, on the
+	# console from where it starts (a test's own output without a newline
+	# may come first on the line).  What a test prints ("PASS: dmesg: no
+	# Oops/BUG/WARNING") is not a splat.
+	log=$(cat "$dir/console.log" "$out/dmesg.txt" 2>/dev/null | tr -d '\r' |
+		grep -oE '\[ *[0-9]+\.[0-9]+\] .*' || true)
 	hits=$(grep -E "$splat_re" <<<"$log" | sort -u || true)
 	# 5.10 parses page_poison=1 by enabling a static key before
 	# jump_label_init(), which WARNs at boot (later kernels enable it
@@ -626,7 +634,14 @@ test)
 	echo "$total_p passed, $total_f failed"
 	[ "$total_f" -eq 0 ]
 	;;
+log-check)
+	# vm.sh log-check DIR OUT: the splat check alone, on a boot's
+	# console.log and qemu.log in DIR and its dmesg.txt in OUT
+	# (tests/harness/splat.sh)
+	kver=log-check
+	kernel_log_clean "${1:?usage: vm.sh log-check DIR OUT}" "${2:?usage: vm.sh log-check DIR OUT}"
+	;;
 *)
-	die "usage: vm.sh run KVER SCRIPT [IN] [OUT] | vm.sh test [KVERS] [TESTS] | vm.sh deb [KVER]"
+	die "usage: vm.sh run KVER SCRIPT [IN] [OUT] | vm.sh test [KVERS] [TESTS] | vm.sh deb [KVER] | vm.sh log-check DIR OUT"
 	;;
 esac
