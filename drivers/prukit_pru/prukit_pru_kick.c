@@ -710,7 +710,9 @@ static void pru_kick_add(struct device *dev)
 	k->load = rproc->ops->load;
 	k->start = rproc->ops->start;
 	k->stop = rproc->ops->stop;
-	rproc->ops->parse_fw = pru_kick_parse_fw;
+	/* both pru_rproc drivers parse the firmware themselves */
+	if (k->parse_fw)
+		rproc->ops->parse_fw = pru_kick_parse_fw;
 	rproc->ops->load = pru_kick_load;
 	if (k->guard) {
 		k->ti_kick = rproc->ops->kick;
@@ -850,22 +852,21 @@ static int __init pru_kick_init(void)
 	pru_kick_parking = irq_domain_create_tree(NULL, &pru_kick_parking_ops, NULL);
 	if (!pru_kick_parking)
 		return -ENOMEM;
-	ret = prukit_pru_ns_init();
-	if (ret)
-		goto remove_parking;
 	ret = bus_register_notifier(&platform_bus_type, &pru_kick_nb);
 	if (ret)
-		goto exit_ns;
+		goto remove_parking;
 	ret = bus_for_each_dev(&platform_bus_type, NULL, NULL, pru_kick_existing);
 	if (ret)
-		goto unregister_notifier;
+		goto remove_kicks;
+	/* after the processors: it wraps the name services of those it knows */
+	ret = prukit_pru_ns_init();
+	if (ret)
+		goto remove_kicks;
 	return 0;
 
-unregister_notifier:
+remove_kicks:
 	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
 	pru_kick_remove_all();
-exit_ns:
-	prukit_pru_ns_exit();
 remove_parking:
 	irq_domain_remove(pru_kick_parking);
 	return ret;
@@ -874,9 +875,9 @@ module_init(pru_kick_init);
 
 static void __exit pru_kick_exit(void)
 {
+	prukit_pru_ns_exit();
 	bus_unregister_notifier(&platform_bus_type, &pru_kick_nb);
 	pru_kick_remove_all();
-	prukit_pru_ns_exit();
 	irq_domain_remove(pru_kick_parking);
 }
 module_exit(pru_kick_exit);

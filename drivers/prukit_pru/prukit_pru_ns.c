@@ -89,19 +89,18 @@ static rpmsg_rx_cb_t pru_ns_cb_of(struct rpmsg_device *rpdev)
 static int pru_ns_cb(struct rpmsg_device *rpdev, void *data, int len, void *priv, u32 src)
 {
 	rpmsg_rx_cb_t cb = pru_ns_cb_of(rpdev);
-	char desc[PRU_NS_NAME_SIZE + 1];
+	char desc[PRU_NS_NAME_SIZE];
 	u8 *msg = data;
 
 	if (!cb)
 		return -ENODEV;
 	if (len == PRU_NS_DESC_LEN) {
 		memcpy(desc, msg + PRU_NS_NAME_SIZE, PRU_NS_NAME_SIZE);
-		desc[PRU_NS_NAME_SIZE] = '\0';
 		/* addr and flags over desc: the 40-byte form */
 		memmove(msg + PRU_NS_NAME_SIZE, msg + 2 * PRU_NS_NAME_SIZE, 8);
 		len = PRU_NS_LEN;
-		dev_info(&rpdev->dev, "a 72-byte name service message (TI's support package; \"%s\") is taken as the 40-byte one\n",
-			 strim(desc));
+		dev_info(&rpdev->dev, "a 72-byte name service message (TI's support package; \"%*pE\") is taken as the 40-byte one\n",
+			 (int)strnlen(desc, PRU_NS_NAME_SIZE), desc);
 	}
 	return cb(rpdev, data, len, priv, src);
 }
