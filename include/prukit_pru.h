@@ -74,6 +74,8 @@ int prukit_pru_ctrl_wait_ready(struct prukit_pru *pru, void __iomem *ctrl,
 int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode,
 			    unsigned int timeout_ms);
 int prukit_pru_ctrl_post(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode);
+int prukit_pru_ctrl_wait(struct prukit_pru *pru, void __iomem *ctrl, u16 seq,
+			 unsigned int timeout_ms);
 int prukit_pru_ctrl_answer(void __iomem *ctrl, u16 seq);
 int prukit_pru_gpio_bank(struct device_node *np);
 int prukit_pru_event(struct device *dev, const char *name);

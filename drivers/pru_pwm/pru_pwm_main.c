@@ -46,6 +46,9 @@
  * @lock: serialises changes and reads of the tables (the table the
  *	firmware does not play is the driver's while it holds the lock)
  * @req: what each channel was last asked, in cycles
+ * @pending_seq: a SET the firmware did not answer in time (0: none); its
+ *	table is the firmware's to take until it answers
+ * @pending_req: what that SET asked, @req once the firmware took it
  * @r30_bit: each channel's R30 bit
  * @nchan: channels
  */
@@ -55,6 +58,8 @@ struct pru_pwm {
 	struct pru_pwm_ctrl __iomem *ctrl;
 	struct mutex lock;	/* see above */
 	struct pru_pwm_req req[PRU_PWM_CHANNELS];
+	u16 pending_seq;
+	struct pru_pwm_req pending_req[PRU_PWM_CHANNELS];
 	u8 r30_bit[PRU_PWM_CHANNELS];
 	unsigned int nchan;
 };
@@ -73,18 +78,52 @@ static int pru_pwm_active(struct pru_pwm *pp)
 }
 
 /*
+ * A SET that timed out is still the firmware's: it may take that table at
+ * the end of any later period.  Until it answers, the driver writes neither
+ * that table nor another command (-EBUSY); once it answered, what that SET
+ * asked is what the channels do.
+ */
+static int pru_pwm_settle(struct pru_pwm *pp)
+{
+	int ret;
+
+	lockdep_assert_held(&pp->lock);
+	if (!pp->pending_seq)
+		return 0;
+	if (!prukit_pru_running(pp->pru))
+		return -EPIPE;
+	ret = prukit_pru_ctrl_answer(pp->ctrl, pp->pending_seq);
+	if (ret == -EAGAIN) {
+		dev_err_ratelimited(pp->dev,
+				    "the firmware has not taken the table it was sent yet: changes refused until it does\n");
+		return -EBUSY;
+	}
+	pp->pending_seq = 0;
+	if (ret) {
+		dev_err(pp->dev, "the firmware refused a table, late: %d\n", ret);
+		return 0;
+	}
+	memcpy(pp->req, pp->pending_req, sizeof(pp->req));
+	dev_info(pp->dev, "the firmware took the table it was sent late: the channels play it\n");
+	return 0;
+}
+
+/*
  * Build the table for @req in the table the firmware does not play and
- * switch to it; waits for the switch (at most a period).
+ * switch to it; waits for the switch (at most a period).  No SET may be
+ * pending (pru_pwm_settle()).
  */
 static int pru_pwm_commit(struct pru_pwm *pp, const struct pru_pwm_req *req)
 {
 	struct pru_pwm_table t;
-	int active, ret;
+	int active, seq, ret;
 	u32 next, period;
 
 	lockdep_assert_held(&pp->lock);
 	if (!prukit_pru_running(pp->pru))
 		return -EPIPE;
+	if (WARN_ON_ONCE(pp->pending_seq))	/* callers settle first */
+		return -EBUSY;
 	ret = pru_pwm_table_build(req, pp->r30_bit, pp->nchan, &t);
 	if (ret)
 		return ret;
@@ -92,11 +131,17 @@ static int pru_pwm_commit(struct pru_pwm *pp, const struct pru_pwm_req *req)
 	next = active == 0 ? 1 : 0;
 	memcpy_toio(&pp->ctrl->table[next], &t, sizeof(t));
 	writel(next, &pp->ctrl->next);
+	seq = prukit_pru_ctrl_post(pp->pru, pp->ctrl, PRU_PWM_CMD_SET);
+	if (seq < 0)
+		return seq;
 	/* the firmware answers at the end of the period it plays (200000 cycles a ms) */
 	period = active < 0 ? 0 : readl(&pp->ctrl->table[active].period);
-	ret = prukit_pru_ctrl_command(pp->pru, pp->ctrl, PRU_PWM_CMD_SET,
-				      PRUKIT_PRU_TIMEOUT_MS + DIV_ROUND_UP(period, 200000));
-	if (ret > 0) {
+	ret = prukit_pru_ctrl_wait(pp->pru, pp->ctrl, seq,
+				   PRUKIT_PRU_TIMEOUT_MS + DIV_ROUND_UP(period, 200000));
+	if (ret == -ETIMEDOUT) {
+		pp->pending_seq = seq;
+		memcpy(pp->pending_req, req, sizeof(pp->pending_req));
+	} else if (ret > 0) {
 		dev_err(pp->dev, "the firmware refused table %u: %d\n", next, ret);
 		return -EPROTO;
 	}
@@ -121,6 +166,11 @@ static int pru_pwm_apply(struct pwm_chip *chip, struct pwm_device *pwm,
 		return -EINVAL;
 
 	mutex_lock(&pp->lock);
+	ret = pru_pwm_settle(pp);
+	if (ret) {
+		mutex_unlock(&pp->lock);
+		return ret;
+	}
 	memcpy(req, pp->req, sizeof(req));
 	r->period = period;
 	r->duty = duty;
@@ -209,9 +259,11 @@ static void pru_pwm_quiet(void *data)
 	unsigned int i;
 
 	mutex_lock(&pp->lock);
-	for (i = 0; i < pp->nchan; i++)
-		pp->req[i].enabled = false;
-	pru_pwm_commit(pp, pp->req);
+	if (!pru_pwm_settle(pp)) {
+		for (i = 0; i < pp->nchan; i++)
+			pp->req[i].enabled = false;
+		pru_pwm_commit(pp, pp->req);
+	}
 	mutex_unlock(&pp->lock);
 }
 

@@ -700,22 +700,43 @@ EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_wait_ready);
 int prukit_pru_ctrl_command(struct prukit_pru *pru, void __iomem *ctrl, u16 opcode,
 			    unsigned int timeout_ms)
 {
+	int seq = prukit_pru_ctrl_post(pru, ctrl, opcode);
+
+	if (seq < 0)
+		return seq;
+	return prukit_pru_ctrl_wait(pru, ctrl, seq, timeout_ms);
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_command);
+
+/**
+ * prukit_pru_ctrl_wait() - wait for the answer to a posted command
+ * @pru: the core
+ * @ctrl: the control block
+ * @seq: the sequence number prukit_pru_ctrl_post() returned
+ * @timeout_ms: how long to wait for the answer
+ *
+ * After -ETIMEDOUT the command is still posted: the firmware may take it
+ * later, and a caller whose parameters the firmware reads when it takes the
+ * command must leave them alone until prukit_pru_ctrl_answer() says it did.
+ *
+ * Return: as prukit_pru_ctrl_command().
+ */
+int prukit_pru_ctrl_wait(struct prukit_pru *pru, void __iomem *ctrl, u16 seq,
+			 unsigned int timeout_ms)
+{
 	char what[32];
 	u32 status;
 	int ret;
 
-	if (!prukit_pru_running(pru))
-		return -EPIPE;
-	pru->seq = pru->seq == U16_MAX ? 1 : pru->seq + 1;
-	writel(PRUKIT_CTRL_CMD(opcode, pru->seq),
-	       ctrl + offsetof(struct prukit_ctrl_hdr, command));
-	snprintf(what, sizeof(what), "command %u", opcode);
-	ret = prukit_pru_poll(pru, ctrl, pru->seq, false, timeout_ms, what, &status);
+	snprintf(what, sizeof(what), "command %u (seq %u)",
+		 PRUKIT_CTRL_OPCODE(readl(ctrl + offsetof(struct prukit_ctrl_hdr, command))),
+		 seq);
+	ret = prukit_pru_poll(pru, ctrl, seq, false, timeout_ms, what, &status);
 	if (ret)
 		return ret;
 	return PRUKIT_CTRL_RESULT(status);
 }
-EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_command);
+EXPORT_SYMBOL_PRUKIT(prukit_pru_ctrl_wait);
 
 /**
  * prukit_pru_ctrl_post() - send a command without waiting for its answer

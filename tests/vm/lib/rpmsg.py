@@ -32,13 +32,20 @@ def done():
 
 
 def write_attr(path, value):
-    """errno of writing value to a sysfs file, 0 if it worked."""
+    """errno of writing value to a sysfs file, 0 if it worked: one write(2),
+    as echo does (a buffered file would write again when it is closed after
+    a failed write, and report that second write's errno)."""
     try:
-        with open(path, "w") as f:
-            f.write(value)
+        fd = os.open(path, os.O_WRONLY)
+    except OSError as e:
+        return e.errno
+    try:
+        os.write(fd, value.encode() if isinstance(value, str) else value)
         return 0
     except OSError as e:
         return e.errno
+    finally:
+        os.close(fd)
 
 
 def read_attr(path):
