@@ -106,7 +106,10 @@ out:
  * rproc_vq_interrupt(): exported by the remoteproc core (remoteproc_virtio.c)
  * but declared only in drivers/remoteproc/remoteproc_internal.h, which a
  * module built outside the kernel tree cannot include; unchanged from v3.4
- * to v6.12.  The same on every kernel, here beside its kin.
+ * to v6.12.  The same on every kernel, here beside its kin.  Checked at
+ * build time against each kernel prukit builds the PRU drivers for
+ * (scripts/pru-kit.sh compiles this line after the kernel's own: 5.10, 6.1,
+ * 6.12 and 6.12-ti's remoteproc core); keep it on one line.
  */
 #include <linux/irqreturn.h>
 struct rproc;

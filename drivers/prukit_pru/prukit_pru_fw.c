@@ -73,7 +73,6 @@
 #define FW_SSP_EVENT_CHANNEL	28
 #define FW_SSP_SIZE		32
 #define FW_SSP_BODY		20
-#define FW_SSP_CHANNELS		10
 #define FW_SSP_NO_HOST		255
 
 static u32 fw_le32(const u8 *p)
@@ -218,7 +217,7 @@ int prukit_pru_fw_irq_events(const u8 *elf, size_t size, u64 *events)
 	for (n = 0; n < count; n++) {
 		u8 ev = map[FW_IRQ_MAP_ENTRY * n];
 
-		if (ev < 64)
+		if (ev < PRUKIT_INTC_EVENTS)
 			*events |= BIT_ULL(ev);
 	}
 	return 0;
@@ -255,7 +254,7 @@ int prukit_pru_fw_rpmsg_events(const u8 *map, unsigned int count,
 	for (n = 1; n < count; n++) {
 		const u8 *e = map + FW_IRQ_MAP_ENTRY * n;
 
-		if (e[2] >= 2 && e[2] <= 9) {
+		if (e[2] >= PRUKIT_INTC_HOST_ARM_FIRST && e[2] <= PRUKIT_INTC_HOST_LAST) {
 			vring->event = e[0];
 			vring->channel = e[1];
 			vring->host = e[2];
@@ -353,7 +352,7 @@ int prukit_pru_fw_ssp_irq_map(const u8 *elf, size_t size, u8 *map, size_t *len)
 	if (fw_le32(r + FW_SSP_BODY_SIZE) < FW_SSP_BODY)
 		return -EINVAL;
 	count = fw_le32(r + FW_SSP_NUM_EVTS);
-	if (count > 64)
+	if (count > PRUKIT_INTC_EVENTS)
 		return -EINVAL;
 	pairs = fw_data_at(elf, size, fw_le32(r + FW_SSP_EVENT_CHANNEL), 2 * count);
 	if (!pairs && count)
@@ -368,13 +367,13 @@ int prukit_pru_fw_ssp_irq_map(const u8 *elf, size_t size, u8 *map, size_t *len)
 			u8 *e = map + FW_IRQ_MAP_HDR + FW_IRQ_MAP_ENTRY * n;
 			bool to_pru;
 
-			if (ev > 63 || ch >= FW_SSP_CHANNELS)
+			if (ev >= PRUKIT_INTC_EVENTS || ch >= PRUKIT_INTC_CHANNELS)
 				return -EINVAL;
 			host = r[FW_SSP_CHANNEL_HOST + ch];
-			if (host == FW_SSP_NO_HOST || host > 9)
+			if (host == FW_SSP_NO_HOST || host > PRUKIT_INTC_HOST_LAST)
 				return -EINVAL;
 			/* first pass: to the PRUs; second: the rest */
-			to_pru = host <= 1;
+			to_pru = host < PRUKIT_INTC_HOST_ARM_FIRST;
 			if (to_pru == !!pass)
 				continue;
 			e[0] = ev;

@@ -6,8 +6,8 @@
  * has no .kick and no vring interrupt: remoteproc refuses every firmware
  * with a vdev (".kick method not defined"), so the PRU Cookbook's rpmsg
  * firmware cannot run.  TI's pru_rproc has both.  The layer's module (its
- * only initialisation is this; modprobe.d/prukit.conf loads it after
- * pru_rproc) gives a PRU
+ * only initialisation is this; loaded with pru_rproc, see the module aliases
+ * below) gives a PRU
  * remote processor that lacks them both, as it appears (it is bound to
  * "pru-rproc"), and stays out of the way of one that has a kick; it does
  * not change the kernel or pru_rproc on disk.  The choice and the reasons
@@ -277,8 +277,9 @@ static int pru_kick_tree_vring(struct pru_kick *k, struct prukit_pru_fw_irq *vri
 		return ret;
 	intc = pru_kick_intc(k);
 	ret = -EINVAL;
-	if (spec.np == intc && spec.args_count == 3 && spec.args[0] < 64 &&
-	    spec.args[1] < 10 && spec.args[2] >= 2 && spec.args[2] <= 9) {
+	if (spec.np == intc && spec.args_count == 3 && spec.args[0] < PRUKIT_INTC_EVENTS &&
+	    spec.args[1] < PRUKIT_INTC_CHANNELS && spec.args[2] >= PRUKIT_INTC_HOST_ARM_FIRST &&
+	    spec.args[2] <= PRUKIT_INTC_HOST_LAST) {
 		vring->event = spec.args[0];
 		vring->channel = spec.args[1];
 		vring->host = spec.args[2];
@@ -826,6 +827,13 @@ static struct notifier_block pru_kick_nb = {
 	.notifier_call = pru_kick_notify,
 };
 
+/*
+ * The cores already bound.  Walked over the platform bus, not with
+ * driver_find() and driver_for_each_device(): driver_find() hands back
+ * pru_rproc's driver without a reference, and an unload of pru_rproc during
+ * the walk would free it under us; the bus walk holds each device it looks
+ * at, and the notifier, registered first, sees any unbind.
+ */
 static int pru_kick_existing(struct device *dev, void *data)
 {
 	device_lock(dev);
@@ -872,6 +880,23 @@ remove_parking:
 	return ret;
 }
 module_init(pru_kick_init);
+
+/*
+ * Loaded with the PRU cores' driver.  Where pru_rproc is a module,
+ * /lib/modprobe.d/prukit.conf's "softdep pru_rproc post: prukit_pru" loads
+ * this right after it.  Where it is built in (PRU_REMOTEPROC=y) nothing
+ * loads pru_rproc; these aliases match the cores' nodes instead, and udev,
+ * which loads every module whose alias matches a device's MODALIAS when the
+ * device is added (at boot, its coldplug), loads this with the first core.
+ * The AM335x's, AM437x's and AM57xx's PRUs: an INTC of the size prukit_pru
+ * knows (prukit_pru_fw.h).
+ */
+MODULE_ALIAS("of:N*T*Cti,am3356-pru");
+MODULE_ALIAS("of:N*T*Cti,am3356-pruC*");
+MODULE_ALIAS("of:N*T*Cti,am4376-pru");
+MODULE_ALIAS("of:N*T*Cti,am4376-pruC*");
+MODULE_ALIAS("of:N*T*Cti,am5728-pru");
+MODULE_ALIAS("of:N*T*Cti,am5728-pruC*");
 
 static void __exit pru_kick_exit(void)
 {

@@ -23,6 +23,7 @@
 
 #include <linux/delay.h>
 #include <linux/device.h>
+#include <linux/dma-direct.h>	/* struct bus_dma_region */
 #include <linux/dma-mapping.h>
 #include <linux/err.h>
 #include <linux/firmware.h>
@@ -278,6 +279,32 @@ static void prukit_pru_release(void *data)
 	prukit_pru_put(pru);
 }
 
+/*
+ * Consumers hand the PRU the DMA addresses of their buffers, and the PRU
+ * reaches DDR through the PRU-ICSS's OCP master port at the ARM's physical
+ * addresses (32 bits).  Right only where the consumer's DMA addresses are
+ * its physical ones: no IOMMU and no "dma-ranges" offset on its bus (the
+ * AM335x's L3 has none; a tree that says otherwise is refused).
+ */
+static int prukit_pru_dma_setup(struct device *dev)
+{
+	const struct bus_dma_region *map;
+	int ret;
+
+	ret = dma_set_mask_and_coherent(dev, DMA_BIT_MASK(32));
+	if (ret)
+		return dev_err_probe(dev, ret, "no 32-bit DMA\n");
+	if (device_iommu_mapped(dev))
+		return dev_err_probe(dev, -EINVAL,
+				     "behind an IOMMU: the PRU would get addresses it cannot use\n");
+	for (map = dev->dma_range_map; map && map->size; map++)
+		if (map->cpu_start != map->dma_start)
+			return dev_err_probe(dev, -EINVAL,
+					     "dma-ranges maps %pa to DMA address %pad: the PRU uses physical addresses\n",
+					     &map->cpu_start, &map->dma_start);
+	return 0;
+}
+
 /**
  * devm_prukit_pru_get() - take a PRU core named in the device's "ti,prus"
  * @dev: the consumer device; its node has "ti,prus" and maybe "firmware-name"
@@ -357,9 +384,9 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 	if (of_property_read_string_index(dev->of_node, "firmware-name", index, &pru->firmware))
 		pru->firmware = NULL;
 
-	ret = dma_coerce_mask_and_coherent(dev, DMA_BIT_MASK(32));
+	ret = prukit_pru_dma_setup(dev);
 	if (ret)
-		return ERR_PTR(dev_err_probe(dev, ret, "no 32-bit DMA\n"));
+		return ERR_PTR(ret);
 	return pru;
 }
 EXPORT_SYMBOL_PRUKIT(devm_prukit_pru_get);
@@ -382,7 +409,7 @@ static u64 prukit_pru_own_events(struct prukit_pru *pru)
 	if (!intc)
 		return 0;
 	for (i = 0; !of_irq_parse_one(pru->dev->of_node, i, &args); i++) {
-		if (args.np == intc && args.args_count && args.args[0] < 64)
+		if (args.np == intc && args.args_count && args.args[0] < PRUKIT_INTC_EVENTS)
 			events |= BIT_ULL(args.args[0]);
 		of_node_put(args.np);
 	}
@@ -844,7 +871,7 @@ static int prukit_pru_event_host(struct device *dev, const char *name)
 
 	if (!prukit_pru_event_spec(dev, name, &spec))
 		return 0;	/* of_irq_get*() says what is missing */
-	if (spec.args[2] < 2 || spec.args[2] > 9)
+	if (spec.args[2] < PRUKIT_INTC_HOST_ARM_FIRST || spec.args[2] > PRUKIT_INTC_HOST_LAST)
 		return dev_err_probe(dev, -EINVAL,
 				     "PRU event %u%s%s is routed to host %u, which no ARM interrupt receives: route it to a host of 2..9 (PRU_EVTOUT0..7)\n",
 				     spec.args[0], name ? " " : "", name ?: "", spec.args[2]);
