@@ -107,7 +107,7 @@
  * struct pru_kick - a PRU remote processor this module gives a kick
  * @node: in pru_kicks
  * @rproc: the processor (a reference is held)
- * @dev: its PRU core's platform device
+ * @dev: its PRU core's platform device (a reference is held)
  * @subdev: stops the vring interrupt before the vdev stops
  * @parse_fw: pru_rproc's parse_fw operation
  * @load: its load operation
@@ -700,7 +700,7 @@ static void pru_kick_add(struct device *dev)
 		goto out;
 	get_device(&rproc->dev);
 	k->rproc = rproc;
-	k->dev = dev;
+	k->dev = get_device(dev);
 	k->guard = prukit_pru_kick_choose(rproc->ops) == PRUKIT_PRU_KICK_ASIDE;
 	spin_lock_init(&k->lock);
 	k->subdev.stop = k->guard ? pru_kick_guard_subdev_stop : pru_kick_subdev_stop;
@@ -754,9 +754,38 @@ static void pru_kick_remove(struct pru_kick *k)
 	list_del_rcu(&k->node);
 	synchronize_rcu();
 	put_device(&rproc->dev);
+	put_device(k->dev);
 	/* a boot that failed before pru_rproc's start left a copy */
 	kvfree(k->fw_copy);
 	kfree(k);
+}
+
+/*
+ * A shutdown does not always stop the processor: another kernel user's
+ * rproc_boot() still holds it (rproc->power above 1), or a signal cut
+ * rproc_shutdown()'s mutex_lock_interruptible() short; 5.10's rproc_del()
+ * does not shut down at all.  The driver goes all the same, and an rpmsg
+ * boot would run on with the vring interrupt requested with @k as its data
+ * and the vdev kicking through @k.  Do what the subdevice's stop does
+ * before a vdev goes: forget the kick, free the vring interrupt and halt the
+ * core (guard mode: TI's stop).  @k stays, with the operations, until that
+ * boot's stop (pru_kick_unbound()).
+ */
+static void pru_kick_halt_held(struct device *dev, struct rproc *rproc)
+{
+	struct pru_kick *k;
+
+	mutex_lock(&pru_kicks_mutex);
+	mutex_lock(&rproc->lock);
+	list_for_each_entry(k, &pru_kicks, node) {
+		if (k->rproc != rproc || !k->held)
+			continue;
+		dev_warn(dev, "%s still runs %s after its shutdown (another boot holds it): halting it, without its rpmsg interrupts, as its driver goes\n",
+			 rproc->name, rproc->firmware);
+		k->subdev.stop(&k->subdev, false);
+	}
+	mutex_unlock(&rproc->lock);
+	mutex_unlock(&pru_kicks_mutex);
 }
 
 /*
@@ -779,21 +808,29 @@ static void pru_kick_unbind(struct device *dev)
 		if (k->rproc == rproc)
 			ours = true;
 	mutex_unlock(&pru_kicks_mutex);
-	if (ours && READ_ONCE(rproc->state) == RPROC_RUNNING) {
+	if (!ours)
+		return;
+	if (READ_ONCE(rproc->state) == RPROC_RUNNING) {
 		dev_info(dev, "%s still runs %s: shutting it down\n", rproc->name,
 			 rproc->firmware);
 		rproc_shutdown(rproc);
 	}
+	pru_kick_halt_held(dev, rproc);
 }
 
-/* The driver has gone and deleted its processor (our reference keeps it) */
+/*
+ * The driver has gone and deleted its processor (our reference keeps it).
+ * A boot that still holds the processor (pru_kick_halt_held()) keeps @k and
+ * the operations, which its stop and its vdev still call, and the module
+ * reference it took.
+ */
 static void pru_kick_unbound(struct device *dev)
 {
 	struct pru_kick *k, *tmp;
 
 	mutex_lock(&pru_kicks_mutex);
 	list_for_each_entry_safe(k, tmp, &pru_kicks, node)
-		if (k->dev == dev)
+		if (k->dev == dev && !READ_ONCE(k->held))
 			pru_kick_remove(k);
 	mutex_unlock(&pru_kicks_mutex);
 }
