@@ -90,6 +90,8 @@ BAD = [("output a file x 10\nmap a e131 universe 0\n", ":2: map a e131: universe
         "number from 1 to 512, not '513'"),
        ("output a file x 10\nmap a opc channel 3 at\n", ":2: map a opc: keys and values go in "
         "pairs"),
+       ("output a file x 10\nmap a opc channel 0\n", ":2: map a opc: channel is a whole "
+        "number from 1 to 255, not '0'"),
        ("output a file x 10\nmap a ddp offset -1\n", ":2: map a ddp: offset is a whole number"),
        ("output a file x 10\nmap a e131 layout zigzag\n", ":2: map a e131: layout is "
         "contiguous"),
@@ -251,9 +253,106 @@ for step in (1, 2, 3):		# the source sends on, the sync packets stopped
     if step == 2:
         check("data waiting 1.3 s for a sync packet: not shown yet",
               len(frames("y", 1200)) == 1)
-check("data waiting 2.6 s for a sync packet (longer than the source timeout): shown "
-      "(e131.sync_timeouts 1), the newest", px.stats.get("e131.sync_timeouts") == 1 and
+check("no sync packet for 2.6 s (the source timeout): synchronization lost (e131.sync_lost "
+      "1); without Force_Synchronization the data is held, as E1.31 asks",
+      px.stats.get("e131.sync_lost") == 1 and len(frames("y", 1200)) == 1)
+px.feed_e131(ps.e131_sync(9, seq=1))
+check("sync packets again: the newest data shown at once (e131.sync_resumed 1)",
+      px.stats.get("e131.sync_resumed") == 1 and
       frames("y", 1200)[1:] == [bytes([31] * 512 + [32] * 512 + [33] * 176)])
+px.feed_e131(ps.e131_data(1, [41] * 512, sync=9, seq=4))
+check("... and the next data waits for its sync packet again", len(frames("y", 1200)) == 2)
+
+
+def sync_frames(force):
+    """10 s of a 25 fps source naming sync universe 9, whose sync packets
+    never come: the frames shown."""
+    fresh("ys")
+    px, clock = make("output ys file %s/ys 4 append\nmap ys e131 universe 1\n" % TMP)
+    for k in range(250):
+        px.feed_e131(ps.e131_data(1, [k % 256] * 12, sync=9, seq=k, options=0x20 * force))
+        clock.t += 0.04
+        px.tick()
+    return px, frames("ys", 12)
+
+
+px, got = sync_frames(True)
+check("sync packets lost, Force_Synchronization set: after the source timeout every frame is "
+      "shown at once (%d of 250 frames in 10 s; before: one per timeout)" % len(got),
+      185 <= len(got) <= 190 and got[-1] == bytes([249]) * 12 and
+      px.stats.get("e131.sync_lost") == 1, len(got))
+px.feed_e131(ps.e131_sync(9))
+px.feed_e131(ps.e131_data(1, [7] * 12, sync=9, seq=250, options=0x20))
+check("... sync packets back: synchronized again (the next data waits for its sync packet)",
+      frames("ys", 12)[-1] == bytes([249]) * 12 and px.stats.get("e131.sync_resumed") == 1)
+px, got = sync_frames(False)
+check("sync packets lost, Force_Synchronization clear: held, nothing shown (E1.31 6.2.6), "
+      "e131.sync_lost counted once", got == [] and px.stats.get("e131.sync_lost") == 1, len(got))
+
+# sync packets of CIDs whose data names no such sync universe: ignored, not kept
+fresh("ya")
+px, clock = make("output ya file %s/ya 4 append\nmap ya e131 universe 1\nmax-sources 3\n"
+                 % TMP)
+L, N = b"L" * 16, b"N" * 16
+px.feed_e131(ps.e131_data(1, [1] * 12, cid=L, sync=9))
+for k in range(7):
+    px.feed_e131(ps.e131_sync(9, cid=bytes([k]) * 16))
+check("sync packets of 7 strangers (CIDs whose data names no sync universe 9): ignored, "
+      "nothing released, nothing kept", frames("ya", 12) == [] and not px.sync_sources and
+      px.stats.get("e131.ignored.sync") == 7, px.sync_sources)
+px.feed_e131(ps.e131_sync(9, cid=L))
+check("... the data's own sender's sync packet: shown", frames("ya", 12) == [bytes([1]) * 12])
+
+# the table of sync packets' senders ages (once full, it refused new senders for good)
+fresh("yt")
+px, clock = make("output yt file %s/yt 4 append\nmap yt e131 universe 1\nmax-sources 3\n"
+                 % TMP)
+for k in range(3):		# senders with a new CID at every start
+    cid = b"%16d" % k
+    px.feed_e131(ps.e131_data(1, [k] * 12, cid=cid, sync=9))
+    px.feed_e131(ps.e131_sync(9, cid=cid))
+    clock.t += 3
+    px.tick()
+clock.t += 100
+px.tick()
+px.feed_e131(ps.e131_data(1, [9] * 12, cid=N, sync=9))
+px.feed_e131(ps.e131_sync(9, cid=N))
+check("3 senders came and went (max-sources 3 x 1 universe); 100 s later a new sender's sync "
+      "packet is taken at once (the others aged out)",
+      frames("yt", 12)[-1:] == [bytes([9]) * 12] and
+      not px.stats.get("e131.dropped.sources_full"), [f[0] for f in frames("yt", 12)])
+
+# a source that lost priority: its pending data and sync packet change nothing
+fresh("yp")
+px, clock = make("output yp file %s/yp 4 append\nmap yp e131 universe 1\n" % TMP)
+px.feed_e131(ps.e131_data(1, [1] * 12, cid=A, priority=100, sync=9))
+px.feed_e131(ps.e131_data(1, [2] * 12, cid=B, priority=150))
+px.feed_e131(ps.e131_sync(9, cid=A))
+check("a source that lost priority: its own sync packet does not show its pending data over "
+      "the winner's", frames("yp", 12) == [bytes([2]) * 12], frames("yp", 12))
+
+# E1.31's layers: the flags of every one; terminated whatever the preview bit
+fresh("yf")
+px, clock = make("output yf file %s/yf 4 append\nmap yf e131 universe 1\n" % TMP)
+pk = bytearray(ps.e131_data(1, [1] * 12))
+pk[38] &= 0x0f
+pk[38] |= 0x60
+px.feed_e131(bytes(pk))
+pk = bytearray(ps.e131_data(1, [1] * 12))
+pk[115] &= 0x0f
+px.feed_e131(bytes(pk))
+pk = bytearray(ps.e131_sync(9))
+pk[38] &= 0x0f
+px.feed_e131(bytes(pk))
+check("flags other than 0x7 in the framing layer (data, sync) and the DMP layer: dropped",
+      (px.stats.get("e131.dropped.framing"), px.stats.get("e131.dropped.dmp"),
+       frames("yf", 12)) == (2, 1, []))
+px.feed_e131(ps.e131_data(1, [3] * 12, cid=A, priority=150))
+px.feed_e131(ps.e131_data(1, [4] * 12, cid=B, priority=100))
+px.feed_e131(ps.e131_data(1, [5] * 12, cid=A, priority=150, seq=1, options=0xc0))
+check("stream terminated with the preview bit set: the source ends all the same (the lower "
+      "one's data shown)", frames("yf", 12)[-1:] == [bytes([4]) * 12] and
+      px.stats.get("e131.terminated") == 1, frames("yf", 12))
 
 fresh("z")
 px, clock = make("output z file %s/z 400 append\nmap z e131 universe 1\n" % TMP)
@@ -265,6 +364,61 @@ check("unsynchronized: 2 of 3 universes, 40 ms: nothing yet (frame-wait 50 ms)",
       frames("z", 1200) == [])
 px.feed_e131(ps.e131_data(3, [3] * 176))
 check("the third: one frame", len(frames("z", 1200)) == 1)
+
+# a sender cycling its data through sync universes cannot make the daemon leave groups in use
+srv = pixeld.Server(os.path.join(TMP, "none.conf"), False)
+px, clock = make("output j file %s/j 1536\nmap j e131 universe 1\n" % TMP)
+srv.px, px.on_join, mship = px, srv.join, []
+
+
+def fake_membership(u, op):
+    """Server.membership without the sockets: the groups joined, in order."""
+    if op == socket.IP_DROP_MEMBERSHIP:
+        srv.joined.pop(u)
+        mship.remove(u)
+    else:
+        srv.joined[u] = [None, 0]
+        mship.append(u)
+    return True
+
+
+srv.membership = fake_membership
+for k in range(8):		# universes 1-8, each synchronized by its own sync universe
+    px.feed_e131(ps.e131_data(1 + k, [k] * 512, cid=A, sync=101 + k))
+    px.feed_e131(ps.e131_sync(101 + k, cid=A))
+legit = sorted(mship)
+for k in range(40):		# universe 9's data names one sync universe after another
+    px.feed_e131(ps.e131_data(9, [k] * 512, cid=B, sync=200 + k, seq=k))
+    clock.t += 0.02
+check("data cycling through 40 sync universes while 8 joined ones have sync packets: none of "
+      "the 8 left, the new ones not joined (e131.sync_groups_full 40)",
+      legit == list(range(101, 109)) and sorted(mship) == legit and
+      srv.stats.get("e131.sync_groups_full") == 40 and not srv.stats.get("e131.sync_groups_left"),
+      (sorted(mship), srv.stats.get("e131.sync_groups_full")))
+clock.t += 3
+px.feed_e131(ps.e131_data(9, [1] * 512, cid=B, sync=300, seq=41))
+check("once a joined group had no sync packet for the source timeout, a new one takes its place",
+      300 in mship and len(mship) == 8 and srv.stats.get("e131.sync_groups_left") == 1, mship)
+
+# --- each output written at most once per turn of the event loop ------------------------------------
+fresh("ob")
+px, clock = make("output ob file %s/ob 4 append\nmap ob opc channel 1\nmap ob e131 universe 1\n"
+                 % TMP)
+px.defer = True
+for k in range(16384):
+    px.feed_opc(ps.opc_message(1, bytes([k % 251]) * (12 if k % 64 == 0 else 0)))
+check("deferred (the event loop's way): 16384 OPC messages of one read write nothing yet",
+      frames("ob", 12) == [])
+px.flush_ready()
+check("... then one frame, the newest data (output.ob.superseded 16383)",
+      frames("ob", 12) == [bytes([16320 % 251]) * 12] and
+      px.stats.get("output.ob.superseded") == 16383, len(frames("ob", 12)))
+px.feed_e131(ps.e131_data(1, [5] * 12, seq=1))
+px.feed_e131(ps.e131_data(1, [6] * 12, seq=2))
+px.flush_ready()
+px.flush_ready()
+check("two E1.31 frames in one turn: one write, the second frame whole",
+      frames("ob", 12)[1:] == [bytes([6]) * 12], frames("ob", 12))
 
 # --- OPC ------------------------------------------------------------------------------------------
 fresh("o", "o2")
@@ -431,6 +585,33 @@ except OSError:
     stats = {}
 check("SIGUSR1: the counters in the stats file", stats.get("ddp.accepted") == "1" and
       stats.get("opc.ignored.channel") == "1" and stats.get("output.f.frames") == "3", stats)
+
+
+def stats_now(want_key, want_value, timeout=10):
+    """SIGUSR1 until the stats file says WANT_KEY >= WANT_VALUE; the counters."""
+    end, got = time.monotonic() + timeout, {}
+    while time.monotonic() < end:
+        p.send_signal(signal.SIGUSR1)
+        time.sleep(0.2)
+        try:
+            with open(os.path.join(TMP, "stats")) as f:
+                got = dict(ln.split() for ln in f if len(ln.split()) == 2)
+        except OSError:
+            continue
+        if int(got.get(want_key, 0)) >= want_value:
+            break
+    return got
+
+
+before = stats_now("opc.accepted", 0)
+with socket.create_connection(("127.0.0.1", ports["o"]), timeout=5) as c:
+    c.sendall(b"".join(ps.opc_message(2, b"") for _ in range(2000)))
+    after = stats_now("opc.accepted", int(before.get("opc.accepted", 0)) + 2000)
+wrote = int(after.get("output.big.frames", 0)) - int(before.get("output.big.frames", 0))
+check("2000 empty OPC messages in one TCP burst: all taken, the 65535-byte frame written %d "
+      "times (at most once per turn of the loop; before: 2000)" % wrote,
+      int(after.get("opc.accepted", 0)) - int(before.get("opc.accepted", 0)) == 2000 and
+      1 <= wrote <= 50, (before, after))
 q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=True, text=True,
                    timeout=30)
 check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
