@@ -474,13 +474,20 @@ v = bytearray(ps.ddp_packets(bytes(6))[0])
 v[0] = 0x81
 px.feed_ddp(bytes(v))
 px.feed_ddp(ps.ddp_packets(bytes(6), dest=7)[0])
-px.feed_ddp(ps.ddp_packets(bytes(6), dtype=0x2B)[0])
 px.feed_ddp(ps.ddp_packets(bytes(60))[0][:-1])
 c = px.stats
-check("DDP: a query, another destination, another data type ignored; version 2 and a "
-      "truncated packet dropped", (c.get("ddp.ignored.query"), c.get("ddp.ignored.destination"),
-                                   c.get("ddp.ignored.data_type"), c.get("ddp.dropped.version"),
-                                   c.get("ddp.dropped.truncated")) == (1, 1, 1, 1, 1))
+check("DDP: a query and another destination ignored; version 2 and a truncated packet dropped",
+      (c.get("ddp.ignored.query"), c.get("ddp.ignored.destination"), c.get("ddp.dropped.version"),
+       c.get("ddp.dropped.truncated")) == (1, 1, 1, 1))
+n = len(frames("d", 3000))
+px.feed_ddp(ps.ddp_packets(bytes([7]) * 30, offset=300, dtype=0x0D)[0])
+px.feed_ddp(ps.ddp_packets(bytes([8]) * 30, offset=330, dtype=0x2B, push=False)[0])
+check("data types 0x0D (ddp-rs's and python-led-ddp's default) and 0x2B: taken, as WLED "
+      "takes them", len(frames("d", 3000)) == n + 1 and
+      frames("d", 3000)[-1][300:330] == bytes([7]) * 30, len(frames("d", 3000)) - n)
+px.feed_ddp(bytes.fromhex("41008001000000000000"))
+check("xLights' sync push (flags 0x41, data type 0x80, no data): the data before it written",
+      len(frames("d", 3000)) == n + 2 and frames("d", 3000)[-1][330:360] == bytes([8]) * 30)
 
 # --- an output that comes later ---------------------------------------------------------------
 later = os.path.join(TMP, "later")
@@ -616,6 +623,17 @@ q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=Tr
                    timeout=30)
 check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
       "cannot listen" in q.stderr and "Address already in use" in q.stderr, q.stderr)
+shares = []
+for port in (ports["e"], ports["d"]):
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as other:
+        other.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            other.bind(("127.0.0.1", port))
+            shares.append(port)
+        except OSError:
+            pass
+check("a program binding the E1.31 or DDP port later with SO_REUSEADDR (olad does) gets "
+      "EADDRINUSE: it cannot take the daemon's unicast in silence", shares == [], shares)
 six = conf("output f file %s/six 4 append\nmap f opc\nlisten ::\ne131 off\nddp off\n"
            "opc-port %d\n" % (TMP, free_port(socket.SOCK_STREAM)), "six.conf")
 port6 = int(open(six).read().split("opc-port ")[1])
