@@ -420,6 +420,29 @@ px.flush_ready()
 check("two E1.31 frames in one turn: one write, the second frame whole",
       frames("ob", 12)[1:] == [bytes([6]) * 12], frames("ob", 12))
 
+# --- the E1.31 receive buffer -------------------------------------------------------------------
+
+
+class FakeSock:
+    """getsockopt/setsockopt of SO_RCVBUF under a net.core.rmem_max of CAP."""
+
+    def __init__(self, cap):
+        self.cap, self.buf = cap, 212992
+
+    def getsockopt(self, level, opt):
+        return self.buf
+
+    def setsockopt(self, level, opt, value):
+        self.buf = max(self.buf, min(2 * value, 2 * self.cap))
+
+
+got, want = pixeld.Server.size_rcvbuf(FakeSock(4194304), 170)
+check("170 universes: a receive buffer for 4 frames of them asked (%d KiB), got under an "
+      "rmem_max of 4 MiB" % (want >> 10), want == 170 * 4 * 2304 and got >= want, (got, want))
+got, want = pixeld.Server.size_rcvbuf(FakeSock(212992), 170)
+check("... under Debian's rmem_max (208 KiB): less, and the log says what to raise it to",
+      got < want, (got, want))
+
 # --- OPC ------------------------------------------------------------------------------------------
 fresh("o", "o2")
 px, clock = make("output o file %s/o 10 rgbw append\noutput o2 file %s/o2 4 append\n"
@@ -623,6 +646,31 @@ q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=Tr
                    timeout=30)
 check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
       "cannot listen" in q.stderr and "Address already in use" in q.stderr, q.stderr)
+# datagrams the kernel drops for want of room in the receive buffer: counted
+before = stats_now("opc.accepted", 0)
+p.send_signal(signal.SIGSTOP)
+with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
+    pk = ps.e131_data(1, bytes(512))
+    for _ in range(3000):
+        tx.sendto(pk, ("127.0.0.1", ports["e"]))
+    p.send_signal(signal.SIGCONT)
+    time.sleep(0.5)
+    tx.sendto(pk, ("127.0.0.1", ports["e"]))	# carries the count of the drops before it
+
+
+def taken(st):
+    return int(st.get("e131.received", 0)) + int(st.get("e131.kernel_drops", 0))
+
+
+want = taken(before) + 3001
+after = stats_now("e131.received", 0)
+end = time.monotonic() + 10
+while taken(after) < want and time.monotonic() < end:
+    after = stats_now("e131.received", 0)
+drops = int(after.get("e131.kernel_drops", 0)) - int(before.get("e131.kernel_drops", 0))
+check("3000 E1.31 datagrams while the daemon was stopped: what the receive buffer could not "
+      "hold counted as e131.kernel_drops (%d), received + dropped = sent" % drops,
+      drops > 0 and taken(after) == want, (taken(after) - taken(before), drops))
 shares = []
 for port in (ports["e"], ports["d"]):
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as other:
