@@ -42,8 +42,9 @@
 #     universe, an OPC message and a DDP packet (callgrind, in-process: the
 #     CPython interpreter's on the host, not a board's), the universes per
 #     CPU-second the daemon handles on one host core over loopback and the
-#     fraction of such a core 48 strings x 600 pixels at the wire rate need
-#     (tools/pixeld/tests/bench.sh)
+#     fraction of such a core 48 strings x 600 pixels at the wire rate need,
+#     and the packet-to-write latency, median and 99th percentile, alone and
+#     under abuse (tools/pixeld/tests/bench.sh)
 #   - the 900-cycle stop/start stress under rpmsg I/O on 6.1 and 6.12
 #     (leaks per cycle, page poisoning), too long for make check
 #

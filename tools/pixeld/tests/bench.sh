@@ -11,7 +11,10 @@
 #  - the universes per CPU-second the daemon handles on one host core (its
 #    accepted counter over its utime + stime while a sender blasts valid
 #    E1.31 universes over loopback), and the fraction of such a core 48
-#    strings x 600 pixels at the wire rate (9180 universes/s) needs.
+#    strings x 600 pixels at the wire rate (9180 universes/s) needs;
+#  - the time from a frame's last universe sent to the frame's write (the
+#    daemon's FIFO output read), median and 99th percentile, alone and
+#    under abuse (abuse.py bench).
 # Prints BENCH: lines; exits non-zero if something failed (a FAIL: line
 # says what).  Works in out/tests/pixeld-bench.
 set -euo pipefail
@@ -28,4 +31,5 @@ mkdir -p "$out"
 rc=0
 /usr/bin/python3 tools/pixeld/tests/bench.py ir "$out" || rc=1
 /usr/bin/python3 tools/pixeld/tests/bench.py rate "$out" 4 || rc=1
+/usr/bin/python3 tools/pixeld/tests/abuse.py bench "$out" || rc=1
 exit $rc

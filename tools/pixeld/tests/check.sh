@@ -7,6 +7,9 @@
 #    clock of our own, and the program's command line, signals and sockets;
 #  - fuzz.py: bad input at every receiver, bounded in time: only counted
 #    drops, no crash, no growth;
+#  - abuse.py check: a sender's frames while others flood it (random CIDs,
+#    lost sync, tiny OPC messages, cycling sync universes): shown whole, in
+#    order;
 #  - its systemd unit, as make install writes it, by systemd-analyze verify.
 # The daemon on the devices, with real senders: the VM test 94-pixeld.
 set -uo pipefail
@@ -18,6 +21,7 @@ command -v systemd-analyze >/dev/null || need_pkgs systemd
 rc=0
 /usr/bin/python3 tools/pixeld/tests/pixeld_check.py || rc=1
 /usr/bin/python3 tools/pixeld/tests/fuzz.py --seconds "${PIXELD_FUZZ_SECONDS:-40}" || rc=1
+/usr/bin/python3 tools/pixeld/tests/abuse.py check "$PRUKIT_TOP/out/tests/pixeld-abuse" || rc=1
 
 tmp=$(mktemp -d)
 sed "s|@SBINDIR@|$PRUKIT_TOP/tools/pixeld|" tools/pixeld/prukit-pixeld.service \

@@ -226,6 +226,13 @@ for k in range(40):
     px.feed_e131(ps.e131_data(1, [k] * 12, cid=b"%16d" % k))
 check("max-sources 3: 40 sources, 3 kept, 37 dropped (e131.dropped.sources_full)",
       len(px.universes[1].sources) == 3 and px.stats.get("e131.dropped.sources_full") == 37)
+px.feed_e131(ps.e131_data(1, [77] * 12, cid=b"%16d" % 77, priority=150))
+check("... a source of a higher priority than theirs is taken all the same, in the place of "
+      "the lowest (e131.sources_evicted 1), and shown", frames("m", 12)[-1][0] == 77 and
+      len(px.universes[1].sources) == 3 and px.stats.get("e131.sources_evicted") == 1)
+px.feed_e131(ps.e131_data(1, [78] * 12, cid=b"%16d" % 78, priority=150))
+check("... one of the same priority as the lowest is not", frames("m", 12)[-1][0] == 77 and
+      px.stats.get("e131.dropped.sources_full") == 37)
 clock.t += 3
 px.tick()
 px.feed_e131(ps.e131_data(1, [99] * 12, cid=b"%16d" % 99))
