@@ -581,7 +581,8 @@ class Fuzz:
 
     def e131_flood(self, cids=300):
         """CIDS new sources, one packet each, on a mapped universe: at most
-        max-sources are taken, and each one taken times out."""
+        max-sources are kept (one of a higher priority than the lowest kept
+        takes its place), and each one taken times out or was evicted."""
         self.wait_e131_quiet()
         a = self.d.stats()
         rng = self.rng
@@ -594,15 +595,17 @@ class Fuzz:
         took = b.get("e131.accepted", 0) - a.get("e131.accepted", 0)
         full = b.get("e131.dropped.sources_full", 0) - a.get("e131.dropped.sources_full", 0)
         tmo = b.get("e131.timeouts", 0) - a.get("e131.timeouts", 0)
-        check(took + full == cids and took <= MAX_SOURCES + tmo and took >= 1,
+        ev = b.get("e131.sources_evicted", 0) - a.get("e131.sources_evicted", 0)
+        check(took + full == cids and took <= MAX_SOURCES + tmo + ev and took >= 1,
               "E1.31 flood of %d new CIDs on universe %d: %d taken (max-sources %d, %d timed "
-              "out meanwhile), %d dropped.sources_full" % (cids, E_UNI, took, MAX_SOURCES, tmo,
-                                                           full))
+              "out meanwhile, %d evicted by higher priorities), %d dropped.sources_full"
+              % (cids, E_UNI, took, MAX_SOURCES, tmo, ev, full))
         self.wait_e131_quiet()
         c = self.d.stats()
         gone = c.get("e131.timeouts", 0) - a.get("e131.timeouts", 0)
-        check(gone == took, "E1.31 flood: each of the %d sources taken timed out (%d timeouts)"
-              % (took, gone))
+        ev = c.get("e131.sources_evicted", 0) - a.get("e131.sources_evicted", 0)
+        check(gone + ev == took, "E1.31 flood: each of the %d sources taken timed out (%d "
+              "timeouts) or was evicted (%d)" % (took, gone, ev))
 
     def e131_sync_addresses(self, end, most=2000):
         """One winning source whose data packets name a new synchronization

@@ -713,6 +713,53 @@ check("listen :: takes IPv6 (OPC over TCP to ::1) and IPv4 (UDP to 127.0.0.1)",
       "listening on ::" in line and isinstance(got6, list) and
       sorted(got6) == [bytes([4]) * 12, bytes([6]) * 12],
       (line, got6))
+
+
+def multicast_run(text, name, netns=False):
+    """A daemon on TEXT's configuration (E1.31 universe 5 onto file output
+    NAME), in a network namespace of its own with only lo (up, no route)
+    when NETNS; an E1.31 datagram sent to universe 5's group through lo.
+    (the frames NAME got, the daemon's log)."""
+    fresh(name)
+    script = conf("""
+import fcntl, socket, struct, subprocess, sys, time
+if %(netns)r:
+    sk = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    req = struct.pack("40s", b"lo")
+    flags = struct.unpack_from("=H", fcntl.ioctl(sk, 0x8913, req), 16)[0]
+    fcntl.ioctl(sk, 0x8914, struct.pack("16sH", b"lo", flags | 1).ljust(40, b"\\0"))
+d = subprocess.Popen([sys.executable, %(daemon)r, "--config", %(cfg)r],
+                     stderr=subprocess.PIPE, text=True)
+log = []
+while not log or log[-1] and "listening" not in log[-1]:
+    log.append(d.stderr.readline())
+tx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_IF, socket.inet_aton("127.0.0.1"))
+tx.sendto(%(pkt)r, ("239.255.0.5", %(port)d))
+time.sleep(0.5)
+d.terminate()
+log.append(d.communicate(timeout=10)[1])
+print("".join(log))
+""" % dict(netns=netns, daemon=DAEMON, cfg=conf(text, name + ".conf"),
+           pkt=ps.e131_data(5, bytes([5]) * 12), port=int(text.split("e131-port ")[1].split()[0])),
+                  name + ".py")
+    cmd = ["unshare", "-n", sys.executable, script] if netns else [sys.executable, script]
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
+    return frames(name, 12), r.stdout + r.stderr
+
+
+mport = free_port()
+got, out = multicast_run("output m file %s/mc 4 append\nmap m e131 universe 5\nlisten ::\n"
+                         "multicast-interface 127.0.0.1\nopc off\nddp off\ne131-port %d\n"
+                         % (TMP, mport), "mc")
+check("listen :: receives E1.31 multicast (IPv4 groups reach an IPv4 socket of its own)",
+      got == [bytes([5]) * 12], (got, out[-500:]))
+mport = free_port()
+got, out = multicast_run("output n file %s/nr 4 append\nmap n e131 universe 5\nopc off\n"
+                         "ddp off\ne131-port %d\n" % (TMP, mport), "nr", netns=True)
+check("no default route (a network namespace with lo only): the group is joined on every "
+      "interface instead, the log says so, and multicast arrives", got == [bytes([5]) * 12] and
+      "no route to the multicast groups" in out and "127.0.0.1" in out, (got, out[-800:]))
 p.send_signal(signal.SIGTERM)
 try:
     rc = p.wait(timeout=10)
