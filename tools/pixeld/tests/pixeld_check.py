@@ -450,6 +450,40 @@ got, want = pixeld.Server.size_rcvbuf(FakeSock(212992), 170)
 check("... under Debian's rmem_max (208 KiB): less, and the log says what to raise it to",
       got < want, (got, want))
 
+# --- unsynchronized frames: never two mixed ----------------------------------------------------
+def torn_run(sends):
+    """SENDS: (universe, frame number k, sequence) in order, each universe's
+    170 pixels all k; the frames written to a 3-universe output, as the
+    list of each one's three universes' k (a frame whole: all three alike)."""
+    fresh("t3")
+    px, clock = make("output t3 file %s/t3 510 append\nmap t3 e131 universe 1 layout pixels\n"
+                     % TMP)
+    for u, k, seq in sends:
+        px.feed_e131(ps.e131_data(u, [k] * 510, seq=seq))
+        clock.t += 0.001
+        px.tick()
+    clock.t += 0.1		# frame-wait: what was gathered of a last frame is shown
+    px.tick()
+    return px, [(f[0], f[510], f[1020]) for f in frames("t3", 1530)]
+
+
+whole = [(k, k, k) for k in range(1, 6)]
+sends = [(2, 0, 0), (3, 0, 0)] + [(u, k, k) for k in range(1, 6) for u in (1, 2, 3)]
+px, got = torn_run(sends)
+check("frame 0's first universe lost (or the stream met mid-frame): frames 1-5 shown whole, "
+      "frame 0's rest not with them (output.t3.incomplete 1)", got == whole and
+      px.stats.get("output.t3.incomplete") == 1, got)
+sends = [(1, 1, 1), (2, 1, 1), (1, 2, 2), (3, 1, 1), (2, 2, 2), (3, 2, 2)]
+px, got = torn_run(sends)
+check("a universe of frame 1 arriving after frame 2 began: late (not shown), frame 2 whole",
+      got == [(2, 2, 2)] and px.stats.get("output.t3.late") == 1, got)
+sends = [(u, k, (k + 50 * u) % 256) for k in range(1, 9) for u in (1, 2, 3)]
+px, got = torn_run(sends)
+check("a sender whose universes are numbered apart (not one number a frame): after 3 frames "
+      "each universe is taken as it comes (frames shown, the last one whole after frame-wait)",
+      len(got) >= 4 and got[-1] == (8, 8, 8) and px.stats.get("output.t3.incomplete") == 3,
+      got)
+
 # --- OPC ------------------------------------------------------------------------------------------
 fresh("o", "o2")
 px, clock = make("output o file %s/o 10 rgbw append\noutput o2 file %s/o2 4 append\n"
