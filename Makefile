@@ -139,7 +139,8 @@ headers_install:
 
 # Daemons for the board, and their systemd units (not enabled: that is the
 # user's choice).  drivers/beaglelogic/server: the BeagleLogic TCP server;
-# tools/pixeld: E1.31, OPC and DDP onto the LED devices, with its
+# tools/pixeld: E1.31, OPC and DDP onto the LED devices (its package,
+# prukit_pixeld, in /usr/lib/prukit beside the prukit command's), with its
 # configuration in /etc/prukit (a file already there is the user's: kept).
 SERVERS := drivers/beaglelogic/server/beaglelogic-tcpd tools/pixeld/prukit-pixeld
 
@@ -151,6 +152,11 @@ server_install:
 		chmod 0755 $(DESTDIR)$(SBIN_DIR)/$${s##*/} && \
 		sed 's|@SBINDIR@|$(SBIN_DIR)|' $$s.service \
 			>$(DESTDIR)$(SYSTEMD_UNIT_DIR)/$${s##*/}.service || exit 1; \
+	done
+	install -d $(DESTDIR)$(TOOL_LIB_DIR)/prukit_pixeld
+	@for f in tools/pixeld/prukit_pixeld/*.py; do \
+		sed 's|@VERSION@|$(PRUKIT_VERSION)|' $$f >$(DESTDIR)$(TOOL_LIB_DIR)/prukit_pixeld/$${f##*/} && \
+		chmod 0644 $(DESTDIR)$(TOOL_LIB_DIR)/prukit_pixeld/$${f##*/} || exit 1; \
 	done
 	@if [ -e $(DESTDIR)$(SYSCONF_DIR)/prukit/pixeld.conf ]; then \
 		echo "  KEEP    $(SYSCONF_DIR)/prukit/pixeld.conf"; \

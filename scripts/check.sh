@@ -71,7 +71,7 @@ step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti
 step deb 63 scripts/deb.sh --check			# [67]: 4 packages, lintian
 step tool 33 tests/tool/test-prukit.py			# [35]: the prukit command on the host
-step pixeld 109 tools/pixeld/tests/check.sh		# [120]: prukit-pixeld on the host, fuzzed
+step pixeld 150 tools/pixeld/tests/check.sh		# [163]: prukit-pixeld on the host, fuzzed, abused
 step prusim 145 prusim_check				# [151]
 step rpmsg-fw 75 tests/rpmsg-fw/run.sh			# [81]
 # Each driver's own checks, drivers/<driver>/tests/check.sh, with the

@@ -33,8 +33,6 @@ import sys
 
 sys.dont_write_bytecode = True  # noqa: E402 (no __pycache__ in the tree)
 
-import importlib.machinery
-import importlib.util
 import os
 import platform
 import random
@@ -43,6 +41,7 @@ import signal
 import socket
 import subprocess
 import time
+import types
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DAEMON = os.path.join(os.path.dirname(HERE), "prukit-pixeld")
@@ -56,11 +55,10 @@ N1, N2 = 300, 1800
 
 
 def load_daemon():
-    loader = importlib.machinery.SourceFileLoader("prukit_pixeld", DAEMON)
-    spec = importlib.util.spec_from_loader("prukit_pixeld", loader)
-    mod = importlib.util.module_from_spec(spec)
-    loader.exec_module(mod)
-    return mod
+    """The daemon's package (tools/pixeld/prukit_pixeld): its Config and Pixeld."""
+    sys.path.insert(0, os.path.dirname(HERE))
+    from prukit_pixeld import config, merge
+    return types.SimpleNamespace(Config=config.Config, Pixeld=merge.Pixeld)
 
 
 # ----------------------------------------------------------------- the ir part

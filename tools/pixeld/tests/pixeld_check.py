@@ -6,8 +6,6 @@ packets built by pixel_send.py from the standards), and the daemon as a
 program (its command line, signals and sockets on loopback).  The VM test
 94-pixeld runs it on the devices with real senders; fuzz.py throws bad
 input at it.  Prints PASS:/FAIL: lines; exits 1 if any failed."""
-import importlib.machinery
-import importlib.util
 import os
 import signal
 import socket
@@ -16,15 +14,12 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # no __pycache__ in the tree
 HERE = os.path.dirname(os.path.realpath(__file__))
-DAEMON = os.environ.get("PIXELD", os.path.join(HERE, "..", "prukit-pixeld"))
-sys.path.insert(0, HERE)
+DAEMON = os.path.join(HERE, "..", "prukit-pixeld")
+sys.path[:0] = [HERE, os.path.join(HERE, "..")]
 import pixel_send as ps  # noqa: E402
-
-loader = importlib.machinery.SourceFileLoader("pixeld", DAEMON)
-spec = importlib.util.spec_from_loader("pixeld", loader)
-pixeld = importlib.util.module_from_spec(spec)
-loader.exec_module(pixeld)
+from prukit_pixeld import config, merge, outputs, protocols, server  # noqa: E402
 
 failed = 0
 TMP = tempfile.mkdtemp(prefix="pixeld-check.")
@@ -57,7 +52,7 @@ def make(text):
     """A Pixeld on TEXT's configuration, its clock, and reader of the
     frames each file output got."""
     clock = Clock()
-    px = pixeld.Pixeld(pixeld.Config(conf(text)), clock=clock)
+    px = merge.Pixeld(config.Config(conf(text)), clock=clock)
     return px, clock
 
 
@@ -107,26 +102,46 @@ BAD = [("output a file x 10\nmap a e131 universe 0\n", ":2: map a e131: universe
        ("output a file x 10\n", ": no map line: nothing would be shown")]
 for text, want in BAD:
     try:
-        pixeld.Config(conf(text))
+        config.Config(conf(text))
         got = "accepted"
-    except pixeld.ConfigError as e:
+    except config.ConfigError as e:
         got = str(e)
     check("a configuration with %r is refused: %r" % (text.splitlines()[-1], want),
           want in got and got.startswith(os.path.join(TMP, "t.conf")), got)
 try:
-    pixeld.Config(os.path.join(TMP, "none.conf"))
+    config.Config(os.path.join(TMP, "none.conf"))
     got = ""
-except pixeld.ConfigError as e:
+except config.ConfigError as e:
     got = str(e)
 check("a missing configuration file: named, with the reason", "none.conf: No such file" in got,
       got)
 try:
-    c = pixeld.Config(os.path.join(HERE, "..", "pixeld.conf"))
+    c = config.Config(os.path.join(HERE, "..", "pixeld.conf"))
     check("the installed configuration (tools/pixeld/pixeld.conf) is valid: /dev/ws281x0 from "
           "universe 1, OPC channel 1 and DDP", [(m.proto, m.output.where) for m in c.maps] ==
           [("e131", "/dev/ws281x0"), ("opc", "/dev/ws281x0"), ("ddp", "/dev/ws281x0")])
-except pixeld.ConfigError as e:
+except config.ConfigError as e:
     check("the installed configuration (tools/pixeld/pixeld.conf) is valid", False, e)
+
+# --- the wire formats, on their own (prukit_pixeld.protocols) -----------------------------------
+d = protocols.parse_e131(ps.e131_data(7, [1, 2, 3], cid=b"C" * 16, seq=9, priority=120,
+                                      sync=4, options=0x20))
+check("parse_e131: a data packet's source, priority, sync universe, sequence, options, "
+      "universe, start code and slots", isinstance(d, protocols.E131Data) and
+      d[:7] == (b"C" * 16, 120, 4, 9, 0x20, 7, 0) and bytes(d.slots) == bytes([1, 2, 3]), d)
+check("parse_e131: a sync packet", protocols.parse_e131(ps.e131_sync(4, cid=b"C" * 16, seq=3)) ==
+      protocols.E131Sync(b"C" * 16, 3, 4))
+check("parse_e131: the reasons, as counted", [protocols.parse_e131(x) for x in (
+    b"x" * 20, ps.e131_data(1, [1])[:-1], ps.e131_data(1, [1], priority=201))] ==
+    ["dropped.truncated", "dropped.length", "dropped.range"])
+check("parse_opc: set pixels (a last partial pixel left out), system exclusive ignored",
+      (tuple(bytes(x) if isinstance(x, memoryview) else x
+             for x in protocols.parse_opc(ps.opc_message(3, bytes(range(7))))),
+       protocols.parse_opc(ps.opc_message(3, b"", command=0xFF))) ==
+      ((3, bytes(range(6))), "ignored.sysex"))
+d = protocols.parse_ddp(ps.ddp_packets(bytes([5]) * 6, offset=30, dtype=0x80)[0])
+check("parse_ddp: flags, offset and data, whatever the data type",
+      (d.flags & protocols.DDP_PUSH, d.offset, bytes(d.data)) == (1, 30, bytes([5]) * 6), d)
 
 # --- E1.31 layouts ---------------------------------------------------------------------------
 fresh("p")
@@ -373,7 +388,7 @@ px.feed_e131(ps.e131_data(3, [3] * 176))
 check("the third: one frame", len(frames("z", 1200)) == 1)
 
 # a sender cycling its data through sync universes cannot make the daemon leave groups in use
-srv = pixeld.Server(os.path.join(TMP, "none.conf"), False)
+srv = server.Server(os.path.join(TMP, "none.conf"), False)
 px, clock = make("output j file %s/j 1536\nmap j e131 universe 1\n" % TMP)
 srv.px, px.on_join, mship = px, srv.join, []
 
@@ -443,10 +458,10 @@ class FakeSock:
         self.buf = max(self.buf, min(2 * value, 2 * self.cap))
 
 
-got, want = pixeld.Server.size_rcvbuf(FakeSock(4194304), 170)
+got, want = server.Server.size_rcvbuf(FakeSock(4194304), 170)
 check("170 universes: a receive buffer for 4 frames of them asked (%d KiB), got under an "
       "rmem_max of 4 MiB" % (want >> 10), want == 170 * 4 * 2304 and got >= want, (got, want))
-got, want = pixeld.Server.size_rcvbuf(FakeSock(212992), 170)
+got, want = server.Server.size_rcvbuf(FakeSock(212992), 170)
 check("... under Debian's rmem_max (208 KiB): less, and the log says what to raise it to",
       got < want, (got, want))
 
@@ -569,7 +584,7 @@ px.feed_opc(ps.opc_message(1, bytes([2]) * 12))
 check("5 s: opened, mapped, written", frames("later/f", 12) == [bytes([2]) * 12])
 
 # --- framebuffer formats ------------------------------------------------------------------------
-fbo = pixeld.FbOutput("fb", "/dev/null")
+fbo = outputs.FbOutput("fb", "/dev/null")
 fbo.pixels, fbo.buf = 2, bytearray([0xff, 0x80, 0x01, 0x12, 0x34, 0x56])
 fbo.fmt, fbo.where_rgb = "32", (2, 1, 0)
 check("a framebuffer of 32 bits, red at 16 (XRGB8888, the hub75 driver's): B, G, R, X bytes",
