@@ -192,7 +192,21 @@ void *rproc_da_to_va(struct rproc *rproc, u64 da, size_t len);
  * Kbuild builds it only where <linux/counter.h> declares
  * devm_counter_alloc(), so nothing here maps one interface onto the other.
  * The symbols are in the COUNTER namespace (PRUKIT_IMPORT_NS_COUNTER()).
+ *
+ * COUNTER_EVENT_DIRECTION_CHANGE: v6.15 ("counter: Introduce the
+ * COUNTER_EVENT_DIRECTION_CHANGE event"; ti-eqep pushes it on channel 0).
+ * Where the kernel's <uapi/linux/counter.h> has it (Kbuild:
+ * PRUKIT_HAVE_COUNTER_DIRECTION_CHANGE), pru_encoder pushes it for a
+ * reversal besides its change of state; elsewhere the value below is never
+ * pushed nor accepted.
  */
+#ifdef PRUKIT_HAVE_COUNTER_DIRECTION_CHANGE
+#define PRUKIT_COUNTER_DIRECTION_CHANGE		true
+#define PRUKIT_COUNTER_EVENT_DIRECTION_CHANGE	COUNTER_EVENT_DIRECTION_CHANGE
+#else
+#define PRUKIT_COUNTER_DIRECTION_CHANGE		false
+#define PRUKIT_COUNTER_EVENT_DIRECTION_CHANGE	0xff
+#endif
 
 /*
  * struct gpio_chip's .set callback returns void in 5.10 to 6.12 and int in

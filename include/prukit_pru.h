@@ -13,6 +13,7 @@
 #include <linux/iopoll.h>
 #include <linux/remoteproc.h>
 #include <linux/types.h>
+#include <linux/workqueue.h>
 
 #include "prukit/pru_ctrl.h"
 
@@ -24,6 +25,9 @@ struct device_node;
 
 /* remoteproc sysfs files the layer makes read-only while it holds a core */
 #define PRUKIT_PRU_RPROC_FILES		4
+
+/* How often the layer looks for a crash report (remoteproc tells no one) */
+#define PRUKIT_PRU_WATCH_MS		250
 
 /* Default for firmware answers: generous, for emulated PRUs too. */
 #define PRUKIT_PRU_TIMEOUT_MS		5000
@@ -45,6 +49,13 @@ struct device_node;
  * @sysfs_mode: the modes of remoteproc's sysfs files before the layer made
  *	them read-only (0: no such file)
  * @seq: sequence number of the last command sent
+ * @on_stop: called when the core stops running the driver's firmware behind
+ *	its back (prukit_pru_notify_stop()), or NULL
+ * @on_stop_data: its argument
+ * @stop_work: calls @on_stop, out of remoteproc's lock
+ * @crash_watch: looks for a crash report every PRUKIT_PRU_WATCH_MS while the
+ *	driver's boot runs and @on_stop is set
+ * @stop_told: @on_stop was called for the current boot
  *
  * Drivers read @rproc and @dev; the rest belongs to the layer.
  */
@@ -60,10 +71,16 @@ struct prukit_pru {
 	unsigned int boot_gen;
 	umode_t sysfs_mode[PRUKIT_PRU_RPROC_FILES];
 	u16 seq;
+	void (*on_stop)(void *data);
+	void *on_stop_data;
+	struct work_struct stop_work;
+	struct delayed_work crash_watch;
+	bool stop_told;
 };
 
 struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index);
 int prukit_pru_boot(struct prukit_pru *pru, const char *firmware);
+void prukit_pru_notify_stop(struct prukit_pru *pru, void (*fn)(void *data), void *data);
 void prukit_pru_shutdown(struct prukit_pru *pru);
 bool prukit_pru_running(struct prukit_pru *pru);
 void __iomem *prukit_pru_map(struct prukit_pru *pru, u32 da, size_t len);

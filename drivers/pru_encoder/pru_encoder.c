@@ -18,13 +18,21 @@
  *   COUNTER_EVENT_CHANGE_OF_STATE  channel 1  a skipped state (A and B both
  *                                             changed between two samples)
  *
- * Skipped states are counted in the count's extension "skipped_states".
- * The PRU strobes its event only while the driver has armed it: a burst
- * costs one interrupt (pru_encoder_proto.h).  A core stopped behind the
- * driver's back (a crash report) is noticed within PRU_ENC_WATCH_MS: every
- * callback then fails with -EPIPE, and every event is pushed once, so that a
- * reader blocked on /dev/counterN wakes and gets the events with the error
- * of its watched components.
+ *   COUNTER_EVENT_DIRECTION_CHANGE channel 0  the direction changed (kernels
+ *                                             that have it, 6.15 on; pushed
+ *                                             with the change of state)
+ *
+ * Each (event, channel) pair means one thing on every kernel: channel 1 of
+ * COUNTER_EVENT_CHANGE_OF_STATE is the decoder's own state, which no event
+ * of the counter subsystem names.  Skipped states are counted in the
+ * count's extension "skipped_states".  The PRU strobes its event only while
+ * the driver has armed it: a burst costs one interrupt
+ * (pru_encoder_proto.h).  A core stopped behind the driver's back is told by
+ * the layer (prukit_pru_notify_stop(): at once for a stop, within
+ * PRUKIT_PRU_WATCH_MS for a crash report): every callback then fails with
+ * -EPIPE, and every event is pushed once, so that a reader blocked on
+ * /dev/counterN wakes and gets the events with the error of its watched
+ * components.
  */
 #define pr_fmt(fmt) KBUILD_MODNAME ": " fmt
 
@@ -37,14 +45,12 @@
 #include <linux/of.h>
 #include <linux/platform_device.h>
 #include <linux/property.h>
-#include <linux/workqueue.h>
 
 #include "compat.h"
 #include "prukit_pru.h"
 #include "pru_encoder_proto.h"
 
 #define PRU_ENC_EVENT_NAME	"encoder"
-#define PRU_ENC_WATCH_MS	250
 
 /* the counter's event channels */
 #define PRU_ENC_CHAN_COUNT	0
@@ -63,7 +69,6 @@ enum pru_enc_signal_id { PRU_ENC_SIG_A, PRU_ENC_SIG_B, PRU_ENC_SIG_INDEX };
  * @stopped: the core stopped behind the driver's back: -EPIPE from now on
  * @seen: the firmware's overflows, underflows, indexes, reversals and
  *	skips when the interrupt handler last looked (handler only)
- * @watch: looks for a stopped core every PRU_ENC_WATCH_MS
  * @signals: A, B and, with an index input, index
  * @synapses: one per signal
  * @count: the position
@@ -77,7 +82,6 @@ struct pru_enc {
 	bool enabled;
 	bool stopped;
 	u32 seen[5];
-	struct delayed_work watch;
 	struct counter_signal signals[3];
 	struct counter_synapse synapses[3];
 	struct counter_count count;
@@ -219,6 +223,9 @@ static int pru_enc_watch_validate(struct counter_device *counter,
 	case COUNTER_EVENT_CHANGE_OF_STATE:
 		return watch->channel <= PRU_ENC_CHAN_SKIP ? 0 : -EINVAL;
 	default:
+		if (PRUKIT_COUNTER_DIRECTION_CHANGE &&
+		    watch->event == PRUKIT_COUNTER_EVENT_DIRECTION_CHANGE)
+			return watch->channel == PRU_ENC_CHAN_COUNT ? 0 : -EINVAL;
 		return -EINVAL;
 	}
 }
@@ -352,6 +359,7 @@ static struct counter_comp pru_enc_count_ext[] = {
 };
 
 /* The firmware's counters, in the order of struct pru_enc's @seen */
+#define PRU_ENC_EV_REVERSAL	3
 static const struct {
 	size_t off;
 	u8 event;
@@ -363,6 +371,15 @@ static const struct {
 	{ CTRL(reversals), COUNTER_EVENT_CHANGE_OF_STATE, PRU_ENC_CHAN_COUNT },
 	{ CTRL(skips), COUNTER_EVENT_CHANGE_OF_STATE, PRU_ENC_CHAN_SKIP },
 };
+
+/* Event @i of pru_enc_events, and a reversal's standard event where the kernel has it */
+static void pru_enc_push(struct pru_enc *enc, unsigned int i)
+{
+	counter_push_event(enc->counter, pru_enc_events[i].event, pru_enc_events[i].channel);
+	if (PRUKIT_COUNTER_DIRECTION_CHANGE && i == PRU_ENC_EV_REVERSAL)
+		counter_push_event(enc->counter, PRUKIT_COUNTER_EVENT_DIRECTION_CHANGE,
+				   PRU_ENC_CHAN_COUNT);
+}
 
 static irqreturn_t pru_enc_irq(int irq, void *data)
 {
@@ -377,32 +394,20 @@ static irqreturn_t pru_enc_irq(int irq, void *data)
 		if (now == enc->seen[i])
 			continue;
 		enc->seen[i] = now;
-		counter_push_event(enc->counter, pru_enc_events[i].event,
-				   pru_enc_events[i].channel);
+		pru_enc_push(enc, i);
 	}
 	return IRQ_HANDLED;
 }
 
-/* A stopped core strobes nothing: tell the readers once, with errors. */
-static void pru_enc_watch(struct work_struct *work)
-{
-	struct pru_enc *enc = container_of(work, struct pru_enc, watch.work);
-	unsigned int i;
-
-	if (!pru_enc_alive(enc)) {
-		schedule_delayed_work(&enc->watch, msecs_to_jiffies(PRU_ENC_WATCH_MS));
-		return;
-	}
-	for (i = 0; i < ARRAY_SIZE(pru_enc_events); i++)
-		counter_push_event(enc->counter, pru_enc_events[i].event,
-				   pru_enc_events[i].channel);
-}
-
-static void pru_enc_cancel_watch(void *data)
+/* The layer says the core stopped: it strobes nothing any more; tell the readers, with errors */
+static void pru_enc_stopped(void *data)
 {
 	struct pru_enc *enc = data;
+	unsigned int i;
 
-	cancel_delayed_work_sync(&enc->watch);
+	pru_enc_alive(enc);
+	for (i = 0; i < ARRAY_SIZE(pru_enc_events); i++)
+		pru_enc_push(enc, i);
 }
 
 /* "prukit,input-bits": A, B and optionally the index, R31 bits 14..16 */
@@ -448,7 +453,6 @@ static int pru_enc_probe(struct platform_device *pdev)
 	enc->dev = dev;
 	enc->counter = counter;
 	mutex_init(&enc->lock);
-	INIT_DELAYED_WORK(&enc->watch, pru_enc_watch);
 
 	nsig = pru_enc_pins(enc, &pins);
 	if (nsig < 0)
@@ -459,6 +463,7 @@ static int pru_enc_probe(struct platform_device *pdev)
 	enc->pru = devm_prukit_pru_get(dev, 0);
 	if (IS_ERR(enc->pru))
 		return PTR_ERR(enc->pru);
+	prukit_pru_notify_stop(enc->pru, pru_enc_stopped, enc);
 
 	ret = prukit_pru_boot(enc->pru, NULL);
 	if (ret)
@@ -514,11 +519,6 @@ static int pru_enc_probe(struct platform_device *pdev)
 	if (ret < 0)
 		return ret;
 	writel(1, enc->ctrl + CTRL(irq_armed));
-
-	ret = devm_add_action_or_reset(dev, pru_enc_cancel_watch, enc);
-	if (ret)
-		return ret;
-	schedule_delayed_work(&enc->watch, msecs_to_jiffies(PRU_ENC_WATCH_MS));
 
 	ret = devm_counter_add(dev, counter);
 	if (ret)

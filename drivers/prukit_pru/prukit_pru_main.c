@@ -242,6 +242,9 @@ static int prukit_pru_subdev_start(struct rproc_subdev *subdev)
 	struct prukit_pru *pru = container_of(subdev, struct prukit_pru, subdev);
 
 	WRITE_ONCE(pru->gen, pru->gen + 1);
+	/* a start while the driver's boot runs: someone started it again */
+	if (READ_ONCE(pru->booted) && pru->on_stop)
+		schedule_work(&pru->stop_work);
 	return 0;
 }
 
@@ -253,7 +256,59 @@ static void prukit_pru_subdev_stop(struct rproc_subdev *subdev, bool crashed)
 	if (crashed && pru->booted)
 		dev_err(pru->dev, "PRU %s crashed: remoteproc restarts it for recovery, without the driver's state\n",
 			dev_name(&pru->rproc->dev));
+	/* not the driver's own shutdown: that clears @booted first */
+	if (READ_ONCE(pru->booted) && pru->on_stop)
+		schedule_work(&pru->stop_work);
 }
+
+/* Tell the driver, once per boot, that its firmware no longer runs */
+static void prukit_pru_stop_work(struct work_struct *work)
+{
+	struct prukit_pru *pru = container_of(work, struct prukit_pru, stop_work);
+
+	if (!READ_ONCE(pru->booted) || prukit_pru_running(pru) || xchg(&pru->stop_told, true))
+		return;
+	pru->on_stop(pru->on_stop_data);
+}
+
+/*
+ * A crash report (remoteproc's debugfs "crash" file; pru_rproc itself
+ * detects none) marks the core crashed and, recovery being disabled for
+ * PRUs, calls no subdevice and notifies no one: looked for here.
+ */
+static void prukit_pru_crash_watch(struct work_struct *work)
+{
+	struct prukit_pru *pru = container_of(to_delayed_work(work), struct prukit_pru,
+					      crash_watch);
+
+	if (!READ_ONCE(pru->booted) || READ_ONCE(pru->stop_told))
+		return;
+	if (READ_ONCE(pru->rproc->state) == RPROC_CRASHED)
+		schedule_work(&pru->stop_work);
+	else
+		schedule_delayed_work(&pru->crash_watch, msecs_to_jiffies(PRUKIT_PRU_WATCH_MS));
+}
+
+/**
+ * prukit_pru_notify_stop() - be told when the core stops behind the driver's back
+ * @pru: the core
+ * @fn: called once per boot of prukit_pru_boot(), from a workqueue (process
+ *	context, without remoteproc's lock), when the core stopped (at once),
+ *	was reported crashed (within PRUKIT_PRU_WATCH_MS) or started again,
+ *	whoever did it; never for prukit_pru_shutdown() or the driver's unbind
+ * @data: @fn's argument
+ *
+ * For drivers that must wake their waiters when the firmware is gone (the
+ * firmware sends them nothing any more).  Set it before prukit_pru_boot();
+ * the layer cancels it when the driver unbinds, before @data's devres goes
+ * if @data was allocated before devm_prukit_pru_get().
+ */
+void prukit_pru_notify_stop(struct prukit_pru *pru, void (*fn)(void *data), void *data)
+{
+	pru->on_stop_data = data;
+	pru->on_stop = fn;
+}
+EXPORT_SYMBOL_PRUKIT(prukit_pru_notify_stop);
 
 /* Let go of the core that prukit_pru_find() returned (and a claim on it) */
 static void prukit_pru_put(struct prukit_pru *pru)
@@ -275,6 +330,8 @@ static void prukit_pru_release(void *data)
 	mutex_lock(&rproc->lock);
 	rproc_remove_subdev(rproc, &pru->subdev);
 	mutex_unlock(&rproc->lock);
+	cancel_delayed_work_sync(&pru->crash_watch);
+	cancel_work_sync(&pru->stop_work);
 	prukit_pru_sysfs_lock(pru, false);
 	prukit_pru_put(pru);
 }
@@ -336,6 +393,8 @@ struct prukit_pru *devm_prukit_pru_get(struct device *dev, unsigned int index)
 		return ERR_PTR(-ENOMEM);
 	pru->dev = dev;
 	pru->index = index;
+	INIT_WORK(&pru->stop_work, prukit_pru_stop_work);
+	INIT_DELAYED_WORK(&pru->crash_watch, prukit_pru_crash_watch);
 
 	np = of_parse_phandle(dev->of_node, "ti,prus", index);
 	if (!np)
@@ -521,8 +580,11 @@ int prukit_pru_boot(struct prukit_pru *pru, const char *firmware)
 		rproc_shutdown(rproc);
 		return -EBUSY;
 	}
-	pru->booted = true;
+	pru->stop_told = false;
+	WRITE_ONCE(pru->booted, true);
 	pru->seq = 0;
+	if (pru->on_stop)
+		schedule_delayed_work(&pru->crash_watch, msecs_to_jiffies(PRUKIT_PRU_WATCH_MS));
 	return 0;
 }
 EXPORT_SYMBOL_PRUKIT(prukit_pru_boot);
@@ -547,7 +609,7 @@ void prukit_pru_shutdown(struct prukit_pru *pru)
 
 	if (!pru->booted)
 		return;
-	pru->booted = false;
+	WRITE_ONCE(pru->booted, false);
 	for (i = 0; i < PRUKIT_PRU_STOP_TRIES; i++) {
 		mutex_lock(&rproc->lock);
 		/*

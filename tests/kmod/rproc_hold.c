@@ -5,11 +5,15 @@
  * only at its last rproc_shutdown(): with boots held here, the shutdown
  * prukit_pru makes when the core's driver goes, and the one rproc_del()
  * makes on 5.11 and later (5.10's makes none for a PRU), leave it running.
- * For tests/vm/cases/99-kick-held-unbind.  A test-only module.
+ * For tests/vm/cases/99-kick-held-unbind.  And a kernel user that shuts a
+ * processor down it never booted (a driver's bug, or what /dev/remoteprocN's
+ * "stop" does where the kernel has it): the processor stops behind the back
+ * of the driver that booted it (pru_encoder's test).  A test-only module.
  *
  * debugfs rproc_hold/hold: write "DEVICE N" to take N more boots of the
  * remote processor of platform device DEVICE (a core bound to pru-rproc:
  * 4a334000.pru), which must run already; read: "DEVICE boots" per line.
+ * debugfs rproc_hold/stop: write "DEVICE": one rproc_shutdown() of it.
  * Unloading the module shuts down once per boot held, except on processors
  * whose driver has gone (their boots are left as they are: nothing can
  * stop those any more).
@@ -25,6 +29,7 @@
 #include <linux/remoteproc.h>
 #include <linux/seq_file.h>
 #include <linux/slab.h>
+#include <linux/string.h>
 #include <linux/uaccess.h>
 
 /**
@@ -103,6 +108,33 @@ static ssize_t rproc_hold_write(struct file *file, const char __user *ubuf, size
 	return ret ? ret : len;
 }
 
+static ssize_t rproc_hold_stop_write(struct file *file, const char __user *ubuf, size_t len,
+				     loff_t *ppos)
+{
+	struct rproc *rproc;
+	char name[32];
+
+	if (!len || len >= sizeof(name))
+		return -EINVAL;
+	if (copy_from_user(name, ubuf, len))
+		return -EFAULT;
+	name[len] = '\0';
+	strim(name);
+	rproc = rproc_hold_find(name);
+	if (!rproc)
+		return -ENODEV;
+	pr_info("%s: shut down by a kernel user that did not boot it\n", name);
+	rproc_shutdown(rproc);
+	put_device(&rproc->dev);
+	return len;
+}
+
+static const struct file_operations rproc_hold_stop_fops = {
+	.owner = THIS_MODULE,
+	.open = simple_open,
+	.write = rproc_hold_stop_write,
+};
+
 static int rproc_hold_show(struct seq_file *s, void *unused)
 {
 	struct rproc_hold *h;
@@ -132,6 +164,7 @@ static int __init rproc_hold_init(void)
 {
 	rproc_hold_dir = debugfs_create_dir("rproc_hold", NULL);
 	debugfs_create_file("hold", 0600, rproc_hold_dir, NULL, &rproc_hold_fops);
+	debugfs_create_file("stop", 0200, rproc_hold_dir, NULL, &rproc_hold_stop_fops);
 	return 0;
 }
 module_init(rproc_hold_init);
