@@ -319,8 +319,10 @@ static int pru_enc_enable_write(struct counter_device *counter, struct counter_c
 				u8 enable)
 {
 	struct pru_enc *enc = counter_priv(counter);
-	int ret = 0;
+	int ret = pru_enc_alive(enc);
 
+	if (ret)
+		return ret;
 	mutex_lock(&enc->lock);
 	if (enable != enc->enabled) {
 		ret = pru_enc_command(enc, enable ? PRU_ENC_CMD_ENABLE : PRU_ENC_CMD_DISABLE);

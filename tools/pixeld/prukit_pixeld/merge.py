@@ -21,11 +21,12 @@ class Source:
 
 class Staged:
     """The universes gathered for an output's next unsynchronized frame,
-    not shown yet: {universe number: (Universe, data, sequence)}."""
-    __slots__ = ("first", "seq", "unis")
+    not shown yet: {universe number: (Universe, data)}, the source and the
+    one sequence number they came with (None if they differ)."""
+    __slots__ = ("first", "seq", "cid", "unis")
 
     def __init__(self, now):
-        self.first, self.seq, self.unis = now, None, {}
+        self.first, self.seq, self.cid, self.unis = now, None, None, {}
 
 
 class Universe:
@@ -81,9 +82,9 @@ class Pixeld:
         self.sync_seen = {}		# sync universe -> time of its last sync packet
         self.sync_lost = set()		# sync universes whose sync packets stopped
         self.partial = {}		# output -> Staged: its next unsynchronized frame
-        self.loose = set()		# outputs whose universes come as they like
+        self.strict = set()		# outputs whose universes come numbered alike
         self.misses = {}		# output -> frames in a row not gathered whole
-        self.streak = {}		# loose output -> whole frames of one number in a row
+        self.streak = {}		# output -> whole frames of one number in a row
         self.touched = set()		# outputs DDP changed since its last push
         # defer: frames complete are kept in .ready and written by
         # flush_ready(), once per turn of the event loop (the newest of each
@@ -271,56 +272,70 @@ class Pixeld:
                 self.on_join([src.sync], dynamic=True)
             return
         for out in uni.outputs:
-            self.stage(out, uni, src.seq, src.data, now)
+            self.stage(out, uni, src, now)
 
-    def stage(self, out, uni, seq, data, now):
-        """Unsynchronized data of UNI for OUT's next frame.  A frame is the
-        output's universes with one sequence number (senders number the
-        universes of a frame alike): data with a newer number starts the
-        next frame, and what was gathered of the one before, incomplete (a
-        datagram lost, or a stream met mid-frame), is never shown with it.
-        An output whose universes do not come that way (numbers that differ
-        from universe to universe, universes sent only when they change) is
-        made loose after 3 such frames in a row: each universe is taken as
-        it comes, the frame written at its last universe or frame-wait after
-        its first; 3 whole frames of one number make it strict again."""
+    def stage(self, out, uni, src, now):
+        """Unsynchronized data of UNI (from SRC, its winner) for OUT's next
+        frame, shown once every universe of the output came.
+
+        Senders number the universes of a frame alike (their counters run in
+        step); an output whose last 3 frames came so, all from one source,
+        is strict: a frame is one sequence number's universes, data with a
+        newer number starts the next frame, and what came of the one before,
+        incomplete (a datagram lost), is dropped, never shown with it
+        (output.NAME.incomplete); a universe of a frame already left behind
+        is late (output.NAME.late).  3 incomplete frames in a row make it
+        loose again.  Loose (at first, and for senders that number each
+        universe on its own or send only what changed): each universe is
+        taken as it comes; what came of a frame whose universes were
+        numbered alike is shown on its own, at once, when a universe with
+        the next number comes (a stream met mid-frame, a datagram lost), so
+        that the next frame is gathered whole; the rest is shown frame-wait
+        after its first universe."""
+        seq = src.seq
         st = self.partial.get(out)
         if st is None:
             st = self.partial[out] = Staged(now)
-        elif out not in self.loose and st.unis and seq != st.seq:
-            if (seq - st.seq) % 256 >= 128:
+        elif st.unis and out in self.strict and (seq != st.seq or src.cid != st.cid):
+            if src.cid == st.cid and (seq - st.seq) % 256 >= 128:
                 self.stats.add("output.%s.late" % out.name)	# its frame has gone
                 return
             self.stats.add("output.%s.incomplete" % out.name)
             self.missed(out)
             st = self.partial[out] = Staged(now)
-        st.seq = seq
-        st.unis[uni.number] = (uni, data, seq)
+        elif st.unis and out not in self.strict and st.seq is not None and \
+                src.cid == st.cid and (seq - st.seq) % 256 == 1 and uni.number not in st.unis:
+            # the rest of a frame numbered alike, the next one begins
+            self.stats.add("output.%s.incomplete" % out.name)
+            self.show_staged(out, self.partial.pop(out))
+            st = self.partial[out] = Staged(now)
+        # st.seq: the one number of the universes gathered, None if they differ
+        st.seq = seq if not st.unis or (st.seq == seq and st.cid == src.cid) else None
+        st.cid = src.cid
+        st.unis[uni.number] = (uni, src.data)
         if len(st.unis) == len(self.e131_outputs[out]):
             del self.partial[out]
             self.misses[out] = 0
-            if out in self.loose:
-                same = len({s for _, _, s in st.unis.values()}) == 1
-                self.streak[out] = self.streak.get(out, 0) + 1 if same else 0
-                if self.streak[out] >= 3:
-                    self.loose.discard(out)
-                    log("output %s: its E1.31 universes come as whole frames again: a frame "
-                        "is one sequence number's" % out.name)
+            self.streak[out] = self.streak.get(out, 0) + 1 if st.seq is not None else 0
+            if out not in self.strict and self.streak[out] >= 3:
+                self.strict.add(out)
+                log("output %s: its E1.31 universes come as whole frames of one sequence "
+                    "number: a frame is one number's from now on" % out.name)
             self.show_staged(out, st)
 
     def show_staged(self, out, st):
-        for uni, data, _ in st.unis.values():
+        for uni, data in st.unis.values():
             self.put(uni, data)
         self.flush([out])
 
     def missed(self, out):
-        """A frame of OUT was not gathered whole."""
+        """A frame of strict OUT was not gathered whole."""
         self.misses[out] = self.misses.get(out, 0) + 1
-        if self.misses[out] >= 3 and out not in self.loose:
-            self.loose.add(out)
+        if self.misses[out] >= 3:
+            self.strict.discard(out)
             self.streak[out] = 0
-            log("output %s: its E1.31 universes do not come as whole frames of one sequence "
-                "number (frames of 3 in a row were not): each universe shown as it comes"
+            log("output %s: its E1.31 universes no longer come as whole frames of one "
+                "sequence number (3 in a row did not): each universe shown as it comes"
                 % out.name)
 
     def put(self, uni, data):
@@ -452,7 +467,7 @@ class Pixeld:
             # a sender that sends only what changed, or the last frame's
             # datagram lost: what came is shown
             self.stats.add("output.%s.partial" % out.name)
-            if out not in self.loose:
+            if out in self.strict:
                 self.missed(out)
             self.show_staged(out, self.partial.pop(out))
         for addr in [a for a, p in self.pending_sync.items()

@@ -482,22 +482,29 @@ def torn_run(sends):
     return px, [(f[0], f[510], f[1020]) for f in frames("t3", 1530)]
 
 
-whole = [(k, k, k) for k in range(1, 6)]
-sends = [(2, 0, 0), (3, 0, 0)] + [(u, k, k) for k in range(1, 6) for u in (1, 2, 3)]
+sends = [(2, 10, 10), (3, 10, 10)] + [(u, k, k) for k in range(11, 16) for u in (1, 2, 3)]
 px, got = torn_run(sends)
-check("frame 0's first universe lost (or the stream met mid-frame): frames 1-5 shown whole, "
-      "frame 0's rest not with them (output.t3.incomplete 1)", got == whole and
+check("a stream met mid-frame (frame 10's universes 2 and 3 first): what came of frame 10 "
+      "shown on its own (universe 1 as it was), frames 11-15 whole, never two sent frames "
+      "mixed", got == [(0, 10, 10)] + [(k, k, k) for k in range(11, 16)], got)
+lockstep = [(u, k, k) for k in range(11, 14) for u in (1, 2, 3)]
+sends = lockstep + [(2, 14, 14), (3, 14, 14)] + [(u, 15, 15) for u in (1, 2, 3)]
+px, got = torn_run(sends)
+check("3 whole frames numbered alike make the output strict; then frame 14's first universe "
+      "lost: frame 14's rest dropped (output.t3.incomplete 1), frame 15 whole",
+      got == [(k, k, k) for k in (11, 12, 13, 15)] and
       px.stats.get("output.t3.incomplete") == 1, got)
-sends = [(1, 1, 1), (2, 1, 1), (1, 2, 2), (3, 1, 1), (2, 2, 2), (3, 2, 2)]
+sends = lockstep + [(1, 14, 14), (2, 14, 14), (1, 15, 15), (3, 14, 14), (2, 15, 15),
+                    (3, 15, 15)]
 px, got = torn_run(sends)
-check("a universe of frame 1 arriving after frame 2 began: late (not shown), frame 2 whole",
-      got == [(2, 2, 2)] and px.stats.get("output.t3.late") == 1, got)
+check("strict: a universe of frame 14 arriving after frame 15 began: late (not shown), "
+      "frame 15 whole", got == [(k, k, k) for k in (11, 12, 13, 15)] and
+      px.stats.get("output.t3.late") == 1, got)
 sends = [(u, k, (k + 50 * u) % 256) for k in range(1, 9) for u in (1, 2, 3)]
 px, got = torn_run(sends)
-check("a sender whose universes are numbered apart (not one number a frame): after 3 frames "
-      "each universe is taken as it comes (frames shown, the last one whole after frame-wait)",
-      len(got) >= 4 and got[-1] == (8, 8, 8) and px.stats.get("output.t3.incomplete") == 3,
-      got)
+check("a sender whose universes are numbered apart (not one number a frame): each universe "
+      "taken as it comes, every frame shown, never made strict",
+      got == [(k, k, k) for k in range(1, 9)] and not px.strict, got)
 
 # --- OPC ------------------------------------------------------------------------------------------
 fresh("o", "o2")
