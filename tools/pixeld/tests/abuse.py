@@ -42,6 +42,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 DAEMON = os.environ.get("PIXELD", os.path.join(os.path.dirname(HERE), "prukit-pixeld"))
 sys.path.insert(0, HERE)
+import bench  # noqa: E402 (its reader of the daemon's counters)
 import pixel_send as ps  # noqa: E402
 
 PYTHON = "/usr/bin/python3"
@@ -110,7 +111,7 @@ class Daemon:
                 raise RuntimeError("the daemon did not start: " +
                                    open(self.log.name).read()[-2000:])
             time.sleep(0.02)
-        self.serial = 0
+        self.counters = bench.Stats(self.proc, self.stats_path)
 
     def read(self):
         size = PIXELS * 3
@@ -127,19 +128,7 @@ class Daemon:
                     buf = buf[size:]
 
     def stats(self):
-        os.kill(self.proc.pid, signal.SIGUSR1)
-        end = time.monotonic() + 10
-        while time.monotonic() < end:
-            try:
-                with open(self.stats_path) as f:
-                    lines = f.read().splitlines()
-            except FileNotFoundError:
-                lines = []
-            if lines and int(lines[0].split()[1]) > self.serial:
-                self.serial = int(lines[0].split()[1])
-                return {k: int(v) for k, v in (ln.split() for ln in lines[1:])}
-            time.sleep(0.01)
-        raise RuntimeError("no stats within 10 s of SIGUSR1")
+        return self.counters.read(timeout=10)
 
     def stop(self):
         self.proc.send_signal(signal.SIGTERM)

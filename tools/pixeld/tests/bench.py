@@ -167,9 +167,10 @@ class Stats:
     def __init__(self, proc, path):
         self.proc, self.path, self.serial = proc, path, 0
 
-    def read(self):
+    def read(self, timeout=5):
+        """The counters, dumped anew (SIGUSR1) and read from the stats file."""
         os.kill(self.proc.pid, signal.SIGUSR1)
-        end = time.monotonic() + 5
+        end = time.monotonic() + timeout
         while time.monotonic() < end and self.proc.poll() is None:
             try:
                 with open(self.path) as f:
@@ -180,7 +181,7 @@ class Stats:
                 self.serial = int(lines[0].split()[1])
                 return {k: int(v) for k, v in (ln.split() for ln in lines[1:])}
             time.sleep(0.005)
-        raise RuntimeError("no stats from the daemon within 5 s of SIGUSR1")
+        raise RuntimeError("no stats from the daemon within %d s of SIGUSR1" % timeout)
 
 
 def rate(work, seconds):
