@@ -143,6 +143,9 @@ struct prusim_config {
  *	changes is called once per change, not once per read; a source that
  *	changes otherwise must be followed by prusim_input_changed().  Without
  *	this callback all inputs read 0.
+ * @gpio_oe: the OE register of GPIO bank @bank changed to @oe (1 = input)
+ *	at @cycle, by the ARM or by a PRU store landing; with DATAOUT (@pin)
+ *	it says which lines drive their pad
  * @host_irq: host interrupt line @host (2..9, the ones that go to the ARM)
  *	changed to @level at @cycle
  * @ocp_read: read @len bytes at OCP address @addr (not a GPIO bank) into
@@ -153,6 +156,7 @@ struct prusim_config {
 struct prusim_ops {
 	void (*pin)(void *ctx, u64 cycle, unsigned int pin, bool level);
 	u32 (*input)(void *ctx, unsigned int port, u64 cycle, u64 *next_change);
+	void (*gpio_oe)(void *ctx, u64 cycle, unsigned int bank, u32 oe);
 	void (*host_irq)(void *ctx, u64 cycle, unsigned int host, bool level);
 	int (*ocp_read)(void *ctx, u32 addr, void *buf, unsigned int len);
 	int (*ocp_write)(void *ctx, u32 addr, const void *buf, unsigned int len);
@@ -369,8 +373,8 @@ struct prusim_intc {
  * @count: COUNT at cycle @since
  * @since: cycle of the last update of @count
  * @compen: COMPEN (stored)
- * @cmp_cfg: CMP_CFG (stored)
- * @cmp: CMP0..7 (stored)
+ *
+ * The compare block is not modelled (prusim_host_modelled()).
  */
 struct prusim_iep {
 	u32 global_cfg;
@@ -378,13 +382,12 @@ struct prusim_iep {
 	u32 count;
 	u64 since;
 	u32 compen;
-	u32 cmp_cfg;
-	u32 cmp[8];
 };
 
 /**
  * struct prusim_gpio - one AM335x GPIO bank
- * @oe: OE register (stored)
+ * @oe: OE register (1 = input; 0xffffffff at reset, as on a board); every
+ *	change is reported through &prusim_ops.gpio_oe
  * @dataout: DATAOUT register; every change is reported as pin events
  */
 struct prusim_gpio {

@@ -24,6 +24,7 @@
 #define GPIO_DATAOUT		PRUSIM_GPIO_DATAOUT
 #define GPIO_CLEARDATAOUT	PRUSIM_GPIO_CLEARDATAOUT
 #define GPIO_SETDATAOUT		PRUSIM_GPIO_SETDATAOUT
+#define GPIO_OE_RESET		0xffffffffu	/* every line an input */
 
 static const u32 prusim_gpio_base[PRUSIM_GPIO_BANKS] = {
 	0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
@@ -62,9 +63,13 @@ void prusim_ctrl_update_ctable(struct prusim_core *c)
  */
 void prusim_mem_reset(struct prusim *s)
 {
+	unsigned int i;
+
 	memset(&s->intc, 0, sizeof(s->intc));
 	memset(&s->iep, 0, sizeof(s->iep));
 	memset(s->gpio, 0, sizeof(s->gpio));
+	for (i = 0; i < PRUSIM_GPIO_BANKS; i++)
+		s->gpio[i].oe = GPIO_OE_RESET;
 	memset(s->cfg_regs, 0, sizeof(s->cfg_regs));
 	s->syscfg = PRUSIM_SYSCFG_RESET;
 	s->gpcfg[0] = 0;
@@ -123,7 +128,11 @@ static void gpio_land(struct prusim *s, const struct prusim_timed *t)
 
 	switch (t->reg) {
 	case GPIO_OE:
+		if (g->oe == ((g->oe & ~t->mask) | v))
+			break;
 		g->oe = (g->oe & ~t->mask) | v;
+		if (s->ops.gpio_oe)
+			s->ops.gpio_oe(s->ctx, s->now, t->bank, g->oe);
 		break;
 	case GPIO_DATAOUT:
 		gpio_set_dataout(s, t->bank, (g->dataout & ~t->mask) | v);
@@ -573,7 +582,9 @@ static void cfg_write32(struct prusim *s, unsigned int __always_unused unit,
 }
 
 /* ---------------------------------------------------------------------- */
-/* IEP: only the free running counter                                      */
+/* IEP: only the free running counter; the compare block (CMP_CFG,        */
+/* CMP_STATUS, CMP0-7) is not modelled, and an access to it stops a core    */
+/* or is reported by prusim_host_modelled() (a compare event never comes)  */
 
 static void iep_sync(struct prusim *s)
 {
@@ -602,11 +613,7 @@ static u32 iep_read32(struct prusim *s, unsigned int __always_unused unit, u32 o
 		return iep->compen;
 	case 0x0c:
 		return iep->count;
-	case 0x40:
-		return iep->cmp_cfg;
 	}
-	if (off >= 0x48 && off < 0x68)
-		return iep->cmp[(off - 0x48) / 4];
 	return 0;
 }
 
@@ -629,13 +636,6 @@ static void iep_write32(struct prusim *s, unsigned int __always_unused unit,
 		break;
 	case 0x0c:
 		iep->count &= ~(val & mask);	/* write 1 to clear */
-		break;
-	case 0x40:
-		iep->cmp_cfg = v;
-		break;
-	default:
-		if (off >= 0x48 && off < 0x68)
-			iep->cmp[(off - 0x48) / 4] = v;
 		break;
 	}
 }
@@ -1001,6 +1001,11 @@ int prusim_mem_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, 
 			    len, addr);
 		return -EFAULT;
 	}
+	if (r.rd && !prusim_host_modelled(addr, len, false)) {
+		prusim_stop(s, c, "load of %u bytes at 0x%05x, a register not modelled",
+			    len, addr);
+		return -EFAULT;
+	}
 	acc->cycles = prusim_read_cycles(s, r.lat, len);
 	if (r.rd == ctrl_read32 && r.unit == c->index && (c->control & PRUSIM_CTRL_CTR_EN))
 		ctrl_read_own(s, c, &r, buf, len, acc->cycles);
@@ -1032,6 +1037,11 @@ int prusim_mem_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8
 		return ocp_write(s, c, addr, buf, len, acc);
 	if (!local_region(s, c->index, addr, len, &r)) {
 		prusim_stop(s, c, "store of %u bytes at unmapped or unmodelled address 0x%05x",
+			    len, addr);
+		return -EFAULT;
+	}
+	if (r.rd && !prusim_host_modelled(addr, len, true)) {
+		prusim_stop(s, c, "store of %u bytes at 0x%05x, a register not modelled",
 			    len, addr);
 		return -EFAULT;
 	}
@@ -1195,8 +1205,6 @@ static const struct prusim_reg_range prusim_cfg_regs[] = {
 
 static const struct prusim_reg_range prusim_iep_regs[] = {
 	{ 0x00, 0x10, PRUSIM_RW },	/* GLOBAL_CFG, GLOBAL_STATUS, COMPEN, COUNT */
-	{ 0x40, 0x44, PRUSIM_RW },	/* CMP_CFG */
-	{ 0x48, 0x68, PRUSIM_RW },	/* CMP0-7 */
 };
 
 static bool prusim_regs_cover(const struct prusim_reg_range *r, unsigned int n, u32 off,

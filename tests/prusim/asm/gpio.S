@@ -12,14 +12,14 @@
 #   iter 3: SET 40 (acc. 45, lands 62), CLR 46 (acc. 53, lands 70), 54, 55
 #   SET 56 (acc. 61, lands 78); lbbo DATAOUT at 62 sees the set that lands
 #   in the same cycle (34 cycles); ldi32, ldi; lbbo GPIO0 OE at 99
-#   (38 cycles); halt at 137.
+#   (38 cycles: its reset value, every line an input); halt at 137.
 #
 # expect: cycles=138
 # expect: pru0.state=halted
 # expect: pru0.instructions=30
 # expect: pru0.stalls=108
 # expect: pru0.r8=0x200000
-# expect: pru0.r12=0
+# expect: pru0.r12=0xffffffff
 # edges: gpio1_21=30,38,46,54,62,70,78
 # period: gpio1_21=16,8
 
