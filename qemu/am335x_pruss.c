@@ -151,6 +151,8 @@ static const struct {
 #define PAD_RXACTIVE            0x20    /* the pad's receiver is on */
 #define UNIMP_LAST_LEN          160
 #define KNOB_MAX_US             1000000
+#define JITTER_PAUSE_ONE_IN     64      /* a slice in 64 is followed by ... */
+#define JITTER_PAUSE_MAX_US     200     /* ... a pause of up to 200 us */
 
 typedef struct PrussInput {
     struct prusim_stim stim;
@@ -184,6 +186,7 @@ struct AM335xPrussState {
     /* properties */
     uint32_t slice_cycles;
     uint32_t hold_cap_ms;
+    uint32_t jitter_seed;
 
     /* Under the BQL */
     bool host_level[AM335X_PRUSS_NUM_HOST_IRQS];
@@ -225,7 +228,7 @@ struct AM335xPrussState {
     uint64_t pad_writes;
     /* what reaches a pin, from the pads (pads_changed()) */
     uint64_t r30_pad_mask;          /* R30 bits on a pad in their mode */
-    uint32_t r31_pad_mask[PRUSIM_NUM_CORES]; /* R31 bits a receiving pad feeds */
+    uint32_t r31_pad_mask[PRUSIM_NUM_CORES]; /* R31 bits a pad feeds */
     uint32_t gpio_pad_mask[PRUSIM_GPIO_BANKS]; /* lines on a pad in mode 7 */
     uint32_t gpio_in_mask[PRUSIM_GPIO_BANKS];  /* ... with its receiver on */
     /* GPIO lines: DATAOUT and OE as they land, what the pads show */
@@ -264,9 +267,14 @@ struct AM335xPrussState {
     uint64_t unimp;
     char unimp_last[UNIMP_LAST_LEN];
 
-    /* knobs (microseconds; freeze: 0 or 1) */
+    /* knobs (microseconds; freeze: 0 or 1; jitter: a seed, 0 = off) */
     uint32_t ocp_write_pause_us;
     uint32_t freeze;
+    uint32_t jitter;
+    GRand *rng;                     /* jitter's, seeded with it */
+    uint64_t jitter_slices;
+    uint64_t jitter_pauses;
+    uint64_t jitter_pause_ns;
 };
 
 static int64_t now_ns(void)
@@ -865,6 +873,9 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
         pruss_unimp(p,
                     "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx " (0x%x)",
                     size, addr, v);
+    } else if (!prusim_store_modelled(addr, &v, size)) {
+        pruss_unimp(p, "PRU-ICSS write of 0x%x (%u bytes) at 0x%05" HWADDR_PRIx
+                    ": a setting not modelled", v, size, addr);
     }
     for (i = 0; i < PRUSIM_NUM_CORES; i++) {
         struct prusim_status st;
@@ -1147,6 +1158,7 @@ enum port_file {
     PF_PADS,
     PF_OCP_WRITE_PAUSE_US,
     PF_FREEZE,
+    PF_JITTER,
     PF_INPUT,               /* PF_INPUT + port: input/<name> */
     PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
 };
@@ -1157,6 +1169,7 @@ static const char *const port_file_name[PF_NUM] = {
     [PF_PADS] = "pads",
     [PF_OCP_WRITE_PAUSE_US] = "ocp_write_pause_us",
     [PF_FREEZE] = "freeze",
+    [PF_JITTER] = "jitter",
     [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
     [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
     [PF_INPUT + PRUSIM_PORT_GPIO(0)] = "input/gpio0",
@@ -1288,6 +1301,9 @@ static uint32_t port_stats(AM335xPrussState *p)
              p->hold_cap_ms);
     port_add(p, &len, "ocp_errors %" PRIu64 "%s%s\n", p->ocp_errors,
              p->ocp_errors ? " last " : "", p->ocp_errors ? p->ocp_err : "");
+    port_add(p, &len, "jitter %u slices %" PRIu64 " pauses %" PRIu64
+             " pause_ns %" PRIu64 "\n", p->jitter, p->jitter_slices,
+             p->jitter_pauses, p->jitter_pause_ns);
     port_add(p, &len, "unmodelled %" PRIu64 "\n", p->unimp);
     port_add(p, &len, "unmodelled_last %s\n", p->unimp ? p->unimp_last : "-");
     return len;
@@ -1351,6 +1367,9 @@ static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
         return 0;
     case PF_FREEZE:
         *len = port_reply(p, "%u\n", p->freeze);
+        return 0;
+    case PF_JITTER:
+        *len = port_reply(p, "%u\n", p->jitter);
         return 0;
     }
     if (file >= PF_INPUT && file < PF_NUM) {
@@ -1431,6 +1450,12 @@ bad:
     return -EINVAL;
 }
 
+/* jitter: a new seed (or off), the same slices and pauses for the same one */
+static void jitter_seed(AM335xPrussState *p)
+{
+    g_rand_set_seed(p->rng, p->jitter);
+}
+
 static int port_write_knob(AM335xPrussState *p, uint32_t *knob, uint32_t max,
                            uint32_t len, uint32_t *reply)
 {
@@ -1453,6 +1478,8 @@ static int port_write_knob(AM335xPrussState *p, uint32_t *knob, uint32_t max,
 static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
                       uint32_t *reply)
 {
+    int ret;
+
     switch (file) {
     case PF_TRACE:
         return port_write_trace(p, len, reply);
@@ -1463,6 +1490,12 @@ static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
                                reply);
     case PF_FREEZE:
         return port_write_knob(p, &p->freeze, 1, len, reply);
+    case PF_JITTER:
+        ret = port_write_knob(p, &p->jitter, UINT32_MAX, len, reply);
+        if (!ret) {
+            jitter_seed(p);
+        }
+        return ret;
     }
     return -EINVAL;
 }
@@ -1693,7 +1726,7 @@ static void *pruss_thread(void *opaque)
     qemu_mutex_lock(&p->lock);
     while (!p->quit) {
         int wait_ms = 0;
-        uint32_t pause_us;
+        uint32_t pause_us, jitter_us, slice;
         int64_t t0;
 
         /*
@@ -1719,7 +1752,13 @@ static void *pruss_thread(void *opaque)
             continue;
         }
         t0 = now_ns();
-        prusim_run(p->s, p->slice_cycles);
+        slice = p->slice_cycles;
+        if (p->jitter) {
+            /* knob: random slices; the ARM's accesses land anywhere */
+            slice = g_rand_int_range(p->rng, 1, 2 * p->slice_cycles + 1);
+            p->jitter_slices++;
+        }
+        prusim_run(p->s, slice);
         p->host_ns += now_ns() - t0;
         /*
          * Idle: every core waits for something only the outside brings
@@ -1730,6 +1769,14 @@ static void *pruss_thread(void *opaque)
         report_stops(p);
         pause_us = p->ocp_pause ? p->ocp_write_pause_us : 0;
         p->ocp_pause = false;
+        if (p->jitter &&
+            !g_rand_int_range(p->rng, 0, JITTER_PAUSE_ONE_IN)) {
+            /* knob: the simulation stops a while, the ARM runs on */
+            jitter_us = g_rand_int_range(p->rng, 0, JITTER_PAUSE_MAX_US + 1);
+            pause_us += jitter_us;
+            p->jitter_pauses++;
+            p->jitter_pause_ns += jitter_us * SCALE_US;
+        }
         if (pause_us) {
             /* knob: the ARM runs while the firmware sits after its store */
             qemu_mutex_unlock(&p->lock);
@@ -1810,6 +1857,8 @@ static void pruss_reset_state(AM335xPrussState *p)
     memset(p->strobe, 0, sizeof(p->strobe));
     memset(p->stopped_reported, 0, sizeof(p->stopped_reported));
     p->freeze = 0;
+    p->jitter = p->jitter_seed;
+    jitter_seed(p);
     p->runnable = false;
     p->irq_dirty = true;
 }
@@ -1880,6 +1929,7 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
     qemu_mutex_init(&p->lock);
     qemu_cond_init(&p->wake);
     qemu_cond_init(&p->turn);
+    p->rng = g_rand_new();
     pruss_reset_state(p);
     p->vm_running = runstate_is_running();
     p->vmstate_entry = qemu_add_vm_change_state_handler(pruss_vm_state_change,
@@ -1906,6 +1956,7 @@ static void am335x_pruss_unrealize(DeviceState *dev)
     }
     g_free(p->trace);
     g_free(p->s);
+    g_rand_free(p->rng);
     qemu_cond_destroy(&p->turn);
     qemu_cond_destroy(&p->wake);
     qemu_mutex_destroy(&p->lock);
@@ -1916,6 +1967,8 @@ static Property am335x_pruss_props[] = {
     DEFINE_PROP_UINT32("slice-cycles", AM335xPrussState, slice_cycles, 2000),
     /* longest hold of simulated time for one undelivered interrupt */
     DEFINE_PROP_UINT32("hold-cap-ms", AM335xPrussState, hold_cap_ms, 200),
+    /* the jitter knob's seed at reset (0: off) */
+    DEFINE_PROP_UINT32("jitter-seed", AM335xPrussState, jitter_seed, 0),
     DEFINE_PROP_END_OF_LIST(),
 };
 

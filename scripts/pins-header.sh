@@ -5,8 +5,9 @@
 # as a header on stdout.
 #
 # Without --dt: the r30, r31 and gpio rows as C: which pad, in which mux
-# mode, carries which PRU output, PRU input or GPIO line.  The QEMU PRU-ICSS model (qemu/am335x_pruss.c) is built
-# with it, so the table lives in one place.
+# mode, carries which PRU output, PRU input or GPIO line.  The QEMU
+# PRU-ICSS model (qemu/am335x_pruss.c) is built with it, so the table lives
+# in one place.
 #
 # --dt: <dt-bindings/pinctrl/am33xx.h> for prukit's overlays, written from
 # the AM335x TRM's facts rather than taken from a kernel tree: the pad

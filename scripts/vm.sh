@@ -45,6 +45,10 @@
 # also fails the test that made it), and bounds every boot by a timeout
 # (VM_TIMEOUT seconds).  PRUKIT_VM_APPEND adds to the guest kernel's
 # command line (a debugging aid: e.g. "dyndbg=module prukit_pru +p").
+# PRUKIT_VM_JITTER=SEED runs the simulated PRU-ICSS in slices of random
+# length with random pauses (its jitter knob, Documentation/qemu-pruss.rst):
+# the same seed, the same slices and pauses; "random" picks one; 0 is off.
+# Every boot prints its seed.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -82,6 +86,12 @@ cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_
 cmdline+=" slub_debug=U,kmalloc-*,kernfs_node_cache stack_depot_disable=1"
 cmdline+=${PRUKIT_VM_APPEND:+ $PRUKIT_VM_APPEND}
 machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+jitter=${PRUKIT_VM_JITTER:-0}
+if [ "$jitter" = random ]; then
+	jitter=$(( (RANDOM << 15 | RANDOM) + 1 ))
+fi
+[[ "$jitter" =~ ^[0-9]{1,10}$ ]] && [ "$jitter" -le 4294967295 ] ||
+	die "PRUKIT_VM_JITTER=$jitter: a seed from 0 (off) to 4294967295, or random"
 # The board's sound device needs no host audio.
 export QEMU_AUDIO_DRV=none
 
@@ -303,7 +313,9 @@ cat_initrd() {
 # 256 MiB one the guest writes /out onto.
 boot() {
 	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
-	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log")
+	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log"
+		-global "am335x-pruss.jitter-seed=$jitter")
+	[ "$jitter" = 0 ] || msg "the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then

@@ -542,6 +542,7 @@ bool prusim_host_pending(const struct prusim *s, unsigned int host);
 int prusim_host_read(struct prusim *s, u32 offset, void *buf, size_t len);
 int prusim_host_write(struct prusim *s, u32 offset, const void *buf, size_t len);
 bool prusim_host_modelled(u32 offset, size_t len, bool write);
+bool prusim_store_modelled(u32 offset, const void *buf, size_t len);
 void *prusim_da_to_va(struct prusim *s, unsigned int core, u32 da, size_t len);
 
 /* Firmware (prusim_elf.c) */

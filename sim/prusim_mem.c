@@ -1045,6 +1045,11 @@ int prusim_mem_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8
 			    len, addr);
 		return -EFAULT;
 	}
+	if (r.rd && !prusim_store_modelled(addr, buf, len)) {
+		prusim_stop(s, c, "store of %u bytes at 0x%05x, a setting not modelled",
+			    len, addr);
+		return -EFAULT;
+	}
 	region_write(s, &r, buf, len);
 	acc->cycles = prusim_write_cycles(s, len);
 	return 0;
@@ -1222,6 +1227,50 @@ static bool prusim_regs_cover(const struct prusim_reg_range *r, unsigned int n, 
 		if (i == n)
 			return false;
 		off = r[i].end < end ? r[i].end : end;
+	}
+	return true;
+}
+
+/**
+ * prusim_store_modelled() - does the model do what this store asks for?
+ * @offset: offset from the subsystem base (see prusim_host_read()); a
+ *	core's local address of the same register is the same number
+ * @buf: the bytes stored
+ * @len: bytes
+ *
+ * Some registers are modelled for one value only, the one every Linux
+ * driver writes: the INTC's polarity (SIPR: active high) and type (SITR:
+ * 0, as pruss_intc sets them), no nesting (CR's NEST_MODE 0), and the IEP
+ * without compensation (COMPEN 0).  Another value, or a store to part of
+ * one of them, asks for behaviour the model does not have.
+ *
+ * Return: false for such a store; true otherwise.
+ */
+bool prusim_store_modelled(u32 offset, const void *buf, size_t len)
+{
+	static const struct {
+		u32 offset;
+		u32 mask;
+		u32 value;
+	} fixed[] = {
+		{ PRUSIM_INTC + 0x004, 0x0000000c, 0 },		/* CR: NEST_MODE */
+		{ PRUSIM_INTC + 0xd00, 0xffffffff, 0xffffffff },	/* SIPR0 */
+		{ PRUSIM_INTC + 0xd04, 0xffffffff, 0xffffffff },	/* SIPR1 */
+		{ PRUSIM_INTC + 0xd80, 0xffffffff, 0 },		/* SITR0 */
+		{ PRUSIM_INTC + 0xd84, 0xffffffff, 0 },		/* SITR1 */
+		{ PRUSIM_IEP + 0x008, 0xffffffff, 0 },		/* COMPEN */
+	};
+	unsigned int i;
+	u32 v;
+
+	for (i = 0; i < ARRAY_SIZE(fixed); i++) {
+		if (offset + len <= fixed[i].offset || offset >= fixed[i].offset + 4)
+			continue;
+		if (offset > fixed[i].offset || offset + len < fixed[i].offset + 4)
+			return false;
+		memcpy(&v, (const u8 *)buf + (fixed[i].offset - offset), 4);
+		if ((v & fixed[i].mask) != fixed[i].value)
+			return false;
 	}
 	return true;
 }

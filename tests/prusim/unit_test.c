@@ -977,6 +977,74 @@ static void test_stim_fuzz(void)
 	      "%s (%u accepted, %u rejected)", why, accepted, rejected);
 }
 
+struct oe_log {
+	unsigned int count;
+	unsigned int bank;
+	u32 oe;
+};
+
+static void log_oe(void *ctx, u64 cycle __always_unused, unsigned int bank, u32 oe)
+{
+	struct oe_log *log = ctx;
+
+	log->count++;
+	log->bank = bank;
+	log->oe = oe;
+}
+
+/*
+ * What the model does not do is refused, not silently ignored: settings it
+ * has one value for, the IEP's compare block (a core's store to CMP0 stops
+ * it); and OE changes reach the embedder, from the TRM's reset value on.
+ */
+static void test_unmodelled(void)
+{
+	static const u32 prog[] = { 0x242e04e3u /* ldi ra, 0x2e04 */, LSL_R3_4,
+				    SBBO_R2_R3_8 /* to 0x2e048, CMP0 */, HALT };
+	const struct prusim_ops ops = { .gpio_oe = log_oe };
+	u32 ones[2] = { 0xffffffffu, 0xffffffffu }, zero = 0, one = 1, nest = 0x4;
+	struct oe_log log = { 0 };
+	struct prusim *s = new_sim(&ops, &log);
+	struct prusim_status st;
+	u32 control = 0x2;
+
+	check(prusim_store_modelled(0x20d00, ones, 4) &&
+	      prusim_store_modelled(0x20d00, ones, 8) &&
+	      prusim_store_modelled(0x20d80, &zero, 4) &&
+	      prusim_store_modelled(0x20004, &zero, 4) &&
+	      prusim_store_modelled(0x2e008, &zero, 4) &&
+	      prusim_store_modelled(0x20028, &one, 4),
+	      "store-modelled", "a modelled setting was refused");
+	check(!prusim_store_modelled(0x20d00, &zero, 4) &&
+	      !prusim_store_modelled(0x20d82, &zero, 2) &&
+	      !prusim_store_modelled(0x20d84, &one, 4) &&
+	      !prusim_store_modelled(0x20004, &nest, 4) &&
+	      !prusim_store_modelled(0x2e008, &one, 4),
+	      "store-unmodelled",
+	      "polarity low, a partial SITR, type 1, nesting or compensation taken");
+	check(prusim_host_modelled(0x2e00c, 4, false) &&
+	      !prusim_host_modelled(0x2e040, 4, true) &&
+	      !prusim_host_modelled(0x2e044, 4, false) &&
+	      !prusim_host_modelled(0x2e048, 4, false),
+	      "iep-compare-unmodelled", "the IEP compare block counts as modelled");
+
+	check(prusim_gpio_read(s, 1, PRUSIM_GPIO_OE) == 0xffffffffu && log.count == 0,
+	      "gpio-oe-reset", "OE 0x%08x, %u calls", prusim_gpio_read(s, 1, PRUSIM_GPIO_OE),
+	      log.count);
+	prusim_gpio_write(s, 2, PRUSIM_GPIO_OE, 0xfffffffeu);
+	prusim_gpio_write(s, 2, PRUSIM_GPIO_OE, 0xfffffffeu);
+	check(log.count == 1 && log.bank == 2 && log.oe == 0xfffffffeu, "gpio-oe-callback",
+	      "%u calls, bank %u, OE 0x%08x", log.count, log.bank, log.oe);
+
+	put_words(s, 0, prog, ARRAY_SIZE(prog));
+	prusim_host_write(s, 0x22000, &control, 4);		/* PRU0 CONTROL: EN */
+	prusim_run(s, 100);
+	prusim_get_status(s, 0, &st);
+	check(st.state == PRUSIM_STOPPED && strstr(st.reason, "0x2e048, a register not modelled"),
+	      "iep-compare-stops-core", "state %d reason \"%s\"", st.state, st.reason);
+	free(s);
+}
+
 int main(int argc, char **argv)
 {
 	if (argc != 4) {
@@ -992,5 +1060,6 @@ int main(int argc, char **argv)
 	test_stim_lookup();
 	test_stim_errors();
 	test_stim_fuzz();
+	test_unmodelled();
 	return failures ? 1 : 0;
 }
