@@ -151,6 +151,10 @@ static const struct {
 #define PAD_RXACTIVE            0x20    /* the pad's receiver is on */
 #define UNIMP_LAST_LEN          160
 #define KNOB_MAX_US             1000000
+/* hold_mode: simulated time stands still for an interrupt ... */
+#define HOLD_SERVICED           0       /* until the ARM unmasked its event */
+#define HOLD_TAKEN              1       /* until the ARM took it (HIPIR, ack) */
+#define HOLD_NONE               2       /* never */
 #define JITTER_PAUSE_ONE_IN     64      /* a slice in 64 is followed by ... */
 #define JITTER_PAUSE_MAX_US     200     /* ... a pause of up to 200 us */
 
@@ -187,6 +191,7 @@ struct AM335xPrussState {
     uint32_t slice_cycles;
     uint32_t hold_cap_ms;
     uint32_t jitter_seed;
+    uint32_t hold_mode_reset;
 
     /* Under the BQL */
     bool host_level[AM335X_PRUSS_NUM_HOST_IRQS];
@@ -271,6 +276,7 @@ struct AM335xPrussState {
     uint32_t ocp_write_pause_us;
     uint32_t freeze;
     uint32_t jitter;
+    uint32_t hold_mode;             /* HOLD_*: how long an interrupt holds */
     GRand *rng;                     /* jitter's, seeded with it */
     uint64_t jitter_slices;
     uint64_t jitter_pauses;
@@ -699,8 +705,9 @@ static uint32_t arm_lines(AM335xPrussState *p)
  */
 static bool pruss_held(AM335xPrussState *p, int *wait_ms)
 {
-    uint32_t lines = arm_lines(p);
-    uint64_t events = p->in_service ? p->in_service & arm_routed(p) : 0;
+    uint32_t lines = p->hold_mode == HOLD_NONE ? 0 : arm_lines(p);
+    uint64_t events = p->in_service && p->hold_mode == HOLD_SERVICED ?
+                      p->in_service & arm_routed(p) : 0;
     int64_t now = now_ns(), held;
 
     p->expired_lines &= lines;
@@ -1159,6 +1166,7 @@ enum port_file {
     PF_OCP_WRITE_PAUSE_US,
     PF_FREEZE,
     PF_JITTER,
+    PF_HOLD_MODE,
     PF_INPUT,               /* PF_INPUT + port: input/<name> */
     PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
 };
@@ -1170,6 +1178,7 @@ static const char *const port_file_name[PF_NUM] = {
     [PF_OCP_WRITE_PAUSE_US] = "ocp_write_pause_us",
     [PF_FREEZE] = "freeze",
     [PF_JITTER] = "jitter",
+    [PF_HOLD_MODE] = "hold_mode",
     [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
     [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
     [PF_INPUT + PRUSIM_PORT_GPIO(0)] = "input/gpio0",
@@ -1295,10 +1304,10 @@ static uint32_t port_stats(AM335xPrussState *p)
              p->lat_count ? p->lat_sum / p->lat_count : 0, p->lat_count);
     port_add(p, &len, "holds %" PRIu64 " held_ns %" PRIu64
              " held_max_ns %" PRIu64
-             " hold_expired %" PRIu64 " hold_cap_ms %u\n",
+             " hold_expired %" PRIu64 " hold_cap_ms %u hold_mode %u\n",
              p->holds, p->hold_ns + held,
              MAX(p->hold_max_ns, (uint64_t)held), p->hold_expired,
-             p->hold_cap_ms);
+             p->hold_cap_ms, p->hold_mode);
     port_add(p, &len, "ocp_errors %" PRIu64 "%s%s\n", p->ocp_errors,
              p->ocp_errors ? " last " : "", p->ocp_errors ? p->ocp_err : "");
     port_add(p, &len, "jitter %u slices %" PRIu64 " pauses %" PRIu64
@@ -1370,6 +1379,9 @@ static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
         return 0;
     case PF_JITTER:
         *len = port_reply(p, "%u\n", p->jitter);
+        return 0;
+    case PF_HOLD_MODE:
+        *len = port_reply(p, "%u\n", p->hold_mode);
         return 0;
     }
     if (file >= PF_INPUT && file < PF_NUM) {
@@ -1496,6 +1508,8 @@ static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
             jitter_seed(p);
         }
         return ret;
+    case PF_HOLD_MODE:
+        return port_write_knob(p, &p->hold_mode, HOLD_NONE, len, reply);
     }
     return -EINVAL;
 }
@@ -1859,6 +1873,7 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->freeze = 0;
     p->jitter = p->jitter_seed;
     jitter_seed(p);
+    p->hold_mode = p->hold_mode_reset;
     p->runnable = false;
     p->irq_dirty = true;
 }
@@ -1969,6 +1984,9 @@ static Property am335x_pruss_props[] = {
     DEFINE_PROP_UINT32("hold-cap-ms", AM335xPrussState, hold_cap_ms, 200),
     /* the jitter knob's seed at reset (0: off) */
     DEFINE_PROP_UINT32("jitter-seed", AM335xPrussState, jitter_seed, 0),
+    /* the hold at reset: 0 until serviced, 1 until taken, 2 none */
+    DEFINE_PROP_UINT32("hold-mode", AM335xPrussState, hold_mode_reset,
+                       HOLD_SERVICED),
     DEFINE_PROP_END_OF_LIST(),
 };
 

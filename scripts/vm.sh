@@ -48,7 +48,9 @@
 # PRUKIT_VM_JITTER=SEED runs the simulated PRU-ICSS in slices of random
 # length with random pauses (its jitter knob, Documentation/qemu-pruss.rst):
 # the same seed, the same slices and pauses; "random" picks one; 0 is off.
-# Every boot prints its seed.
+# Every boot prints its seed.  PRUKIT_VM_HOLD=serviced (the default),
+# taken or none: how long an interrupt towards the ARM holds simulated time
+# (until the ARM serviced its event, until it took it, never).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -92,6 +94,12 @@ if [ "$jitter" = random ]; then
 fi
 [[ "$jitter" =~ ^[0-9]{1,10}$ ]] && [ "$jitter" -le 4294967295 ] ||
 	die "PRUKIT_VM_JITTER=$jitter: a seed from 0 (off) to 4294967295, or random"
+case ${PRUKIT_VM_HOLD:-serviced} in
+serviced) hold_mode=0 ;;
+taken) hold_mode=1 ;;
+none) hold_mode=2 ;;
+*) die "PRUKIT_VM_HOLD=$PRUKIT_VM_HOLD: serviced, taken or none" ;;
+esac
 # The board's sound device needs no host audio.
 export QEMU_AUDIO_DRV=none
 
@@ -314,7 +322,8 @@ cat_initrd() {
 boot() {
 	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
 	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log"
-		-global "am335x-pruss.jitter-seed=$jitter")
+		-global "am335x-pruss.jitter-seed=$jitter"
+		-global "am335x-pruss.hold-mode=$hold_mode")
 	[ "$jitter" = 0 ] || msg "the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
