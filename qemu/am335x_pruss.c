@@ -37,11 +37,13 @@
  * Register values are handled as host integers: little-endian hosts only.
  *
  * Emulation policy (not a property of the board): while a host interrupt
- * towards the ARM is pending, or an event the ARM acknowledged is still
- * masked in its handler, simulated time stands still, up to hold-cap-ms of
- * host time: the emulated ARM is far slower than a real one relative to the
- * PRU, and a register-faithful INTC would otherwise merge events a board's
- * ARM takes one by one.
+ * towards the ARM is pending (until the ARM's handler has taken its event:
+ * read HIPIR, masked and acknowledged it), simulated time stands still, up
+ * to hold-cap-ms of host time; the handler and its thread then run while
+ * the PRU runs on.  The knob hold_mode makes the hold last until the ARM
+ * unmasks the event (serviced) or removes it: the emulated ARM is far
+ * slower than a real one relative to the PRU, and a test that counts every
+ * event of a fast burst needs the longer hold.
  */
 
 #include "qemu/osdep.h"
@@ -1986,7 +1988,7 @@ static Property am335x_pruss_props[] = {
     DEFINE_PROP_UINT32("jitter-seed", AM335xPrussState, jitter_seed, 0),
     /* the hold at reset: 0 until serviced, 1 until taken, 2 none */
     DEFINE_PROP_UINT32("hold-mode", AM335xPrussState, hold_mode_reset,
-                       HOLD_SERVICED),
+                       HOLD_TAKEN),
     DEFINE_PROP_END_OF_LIST(),
 };
 

@@ -47,10 +47,11 @@
 # command line (a debugging aid: e.g. "dyndbg=module prukit_pru +p").
 # PRUKIT_VM_JITTER=SEED runs the simulated PRU-ICSS in slices of random
 # length with random pauses (its jitter knob, Documentation/qemu-pruss.rst):
-# the same seed, the same slices and pauses; "random" picks one; 0 is off.
-# Every boot prints its seed.  PRUKIT_VM_HOLD=serviced (the default),
-# taken or none: how long an interrupt towards the ARM holds simulated time
-# (until the ARM serviced its event, until it took it, never).
+# the same seed, the same slices and pauses; "random" (the default) picks
+# one; 0 is off.  Every boot prints its seed.  PRUKIT_VM_HOLD=taken (the
+# default), serviced or none: how long an interrupt towards the ARM holds
+# simulated time (until the ARM took its event, until it serviced it,
+# never).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -88,13 +89,13 @@ cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_
 cmdline+=" slub_debug=U,kmalloc-*,kernfs_node_cache stack_depot_disable=1"
 cmdline+=${PRUKIT_VM_APPEND:+ $PRUKIT_VM_APPEND}
 machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
-jitter=${PRUKIT_VM_JITTER:-0}
+jitter=${PRUKIT_VM_JITTER:-random}
 if [ "$jitter" = random ]; then
 	jitter=$(( (RANDOM << 15 | RANDOM) + 1 ))
 fi
 [[ "$jitter" =~ ^[0-9]{1,10}$ ]] && [ "$jitter" -le 4294967295 ] ||
 	die "PRUKIT_VM_JITTER=$jitter: a seed from 0 (off) to 4294967295, or random"
-case ${PRUKIT_VM_HOLD:-serviced} in
+case ${PRUKIT_VM_HOLD:-taken} in
 serviced) hold_mode=0 ;;
 taken) hold_mode=1 ;;
 none) hold_mode=2 ;;
