@@ -155,7 +155,7 @@ static const struct {
 #define KNOB_MAX_US             1000000
 /* hold_mode: simulated time stands still for an interrupt ... */
 #define HOLD_SERVICED           0       /* until the ARM unmasked its event */
-#define HOLD_TAKEN              1       /* until the ARM took it (HIPIR, ack) */
+#define HOLD_TAKEN              1       /* until the ARM took it (to SICR) */
 #define HOLD_NONE               2       /* never */
 #define JITTER_PAUSE_ONE_IN     64      /* a slice in 64 is followed by ... */
 #define JITTER_PAUSE_MAX_US     200     /* ... a pause of up to 200 us */
@@ -708,9 +708,22 @@ static uint32_t arm_lines(AM335xPrussState *p)
 static bool pruss_held(AM335xPrussState *p, int *wait_ms)
 {
     uint32_t lines = p->hold_mode == HOLD_NONE ? 0 : arm_lines(p);
-    uint64_t events = p->in_service && p->hold_mode == HOLD_SERVICED ?
-                      p->in_service & arm_routed(p) : 0;
+    uint64_t events = 0;
     int64_t now = now_ns(), held;
+
+    /*
+     * taken: from its read from HIPIR until acknowledged (SICR);
+     * serviced: also from the mask (EICR) to the unmask (EISR)
+     */
+    if (p->hold_mode != HOLD_NONE && p->taken) {
+        events = p->taken;
+    }
+    if (p->hold_mode == HOLD_SERVICED) {
+        events |= p->in_service;
+    }
+    if (events) {
+        events &= arm_routed(p);
+    }
 
     p->expired_lines &= lines;
     p->expired_events &= events;

@@ -105,7 +105,10 @@ print("%.2f" % (res["cycles"] / (ru.ru_utime + ru.ru_stime) / 1e6))
 PY
 	)
 	echo "BENCH: prusim host tool, blinky on both cores: $host_mcps M simulated cycles per CPU second"
-	"$PRUKIT_TOP/scripts/vm.sh" run "${PRUKIT_VM_KVER:-6.1}" "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
+	# the model's own speed: without the jitter knob's random pauses
+	# (PRUKIT_VM_JITTER=SEED measures with them)
+	PRUKIT_VM_JITTER=${PRUKIT_VM_JITTER:-0} \
+		"$PRUKIT_TOP/scripts/vm.sh" run "${PRUKIT_VM_KVER:-6.1}" "$PRUKIT_TOP/tests/vm/bench/guest" "" "$out/guest" \
 		>"$out/guest.log" 2>&1 || { tail -n 20 "$out/guest.log"; die "the bench guest failed"; }
 	grep -E '^(BENCH|INFO):' "$out/guest.log" || true
 	python3 - "$host_mcps" "$out/guest.log" <<'PY'
