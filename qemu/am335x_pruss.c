@@ -14,7 +14,9 @@
  *               GPIO banks 0..3 (gpio-omap): OE and the data registers are
  *               the simulator's, the rest is stored here
  *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
- *               reaches the pin trace only through a pad muxed to it
+ *               or a GPIO output reaches the pin trace only through a pad
+ *               in its mode, an input R31 or DATAIN only through one that
+ *               also has its receiver on
  *   0x5f000000  prukit's test port: pin trace, input stimulus, statistics
  *               and timing knobs, for tests inside the guest (registers:
  *               sim/prusim_port.h; a guest driver, prukit's
@@ -41,9 +43,9 @@
  * read HIPIR, masked and acknowledged it), simulated time stands still, up
  * to hold-cap-ms of host time; the handler and its thread then run while
  * the PRU runs on.  The knob hold_mode makes the hold last until the ARM
- * unmasks the event (serviced) or removes it: the emulated ARM is far
- * slower than a real one relative to the PRU, and a test that counts every
- * event of a fast burst needs the longer hold.
+ * unmasks the event (serviced) or turns it off (none): the emulated ARM is
+ * far slower than a real one relative to the PRU, and a test that counts
+ * every event of a fast burst needs the longer hold.
  */
 
 #include "qemu/osdep.h"
