@@ -977,6 +977,35 @@ static void ctrl_read_own(struct prusim *s, struct prusim_core *c,
 	c->control = control;
 }
 
+/*
+ * The region of a core's load (@store NULL) or store (the bytes stored) in
+ * its local map, or -EFAULT after stopping the core: an unmapped address, a
+ * register its block does not model, or a setting modelled for other
+ * values only (prusim_host_modelled(), prusim_store_modelled()).
+ */
+static int local_access(struct prusim *s, struct prusim_core *c, u32 addr, const u8 *store,
+			u32 len, struct prusim_region *r)
+{
+	const char *what = store ? "store" : "load";
+
+	if (!local_region(s, c->index, addr, len, r)) {
+		prusim_stop(s, c, "%s of %u bytes at unmapped or unmodelled address 0x%05x",
+			    what, len, addr);
+		return -EFAULT;
+	}
+	if (r->rd && !prusim_host_modelled(addr, len, !!store)) {
+		prusim_stop(s, c, "%s of %u bytes at 0x%05x, a register not modelled",
+			    what, len, addr);
+		return -EFAULT;
+	}
+	if (r->rd && store && !prusim_store_modelled(addr, store, len)) {
+		prusim_stop(s, c, "%s of %u bytes at 0x%05x, a setting not modelled",
+			    what, len, addr);
+		return -EFAULT;
+	}
+	return 0;
+}
+
 /**
  * prusim_mem_read() - a load by core @c from its local address map
  * @s: simulator
@@ -996,16 +1025,8 @@ int prusim_mem_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, 
 	memset(acc, 0, sizeof(*acc));
 	if (addr >= PRUSIM_OCP_BASE)
 		return ocp_read(s, c, addr, buf, len, acc);
-	if (!local_region(s, c->index, addr, len, &r)) {
-		prusim_stop(s, c, "load of %u bytes at unmapped or unmodelled address 0x%05x",
-			    len, addr);
+	if (local_access(s, c, addr, NULL, len, &r))
 		return -EFAULT;
-	}
-	if (r.rd && !prusim_host_modelled(addr, len, false)) {
-		prusim_stop(s, c, "load of %u bytes at 0x%05x, a register not modelled",
-			    len, addr);
-		return -EFAULT;
-	}
 	acc->cycles = prusim_read_cycles(s, r.lat, len);
 	if (r.rd == ctrl_read32 && r.unit == c->index && (c->control & PRUSIM_CTRL_CTR_EN))
 		ctrl_read_own(s, c, &r, buf, len, acc->cycles);
@@ -1035,21 +1056,8 @@ int prusim_mem_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8
 	s->epoch++;
 	if (addr >= PRUSIM_OCP_BASE)
 		return ocp_write(s, c, addr, buf, len, acc);
-	if (!local_region(s, c->index, addr, len, &r)) {
-		prusim_stop(s, c, "store of %u bytes at unmapped or unmodelled address 0x%05x",
-			    len, addr);
+	if (local_access(s, c, addr, buf, len, &r))
 		return -EFAULT;
-	}
-	if (r.rd && !prusim_host_modelled(addr, len, true)) {
-		prusim_stop(s, c, "store of %u bytes at 0x%05x, a register not modelled",
-			    len, addr);
-		return -EFAULT;
-	}
-	if (r.rd && !prusim_store_modelled(addr, buf, len)) {
-		prusim_stop(s, c, "store of %u bytes at 0x%05x, a setting not modelled",
-			    len, addr);
-		return -EFAULT;
-	}
 	region_write(s, &r, buf, len);
 	acc->cycles = prusim_write_cycles(s, len);
 	return 0;
