@@ -159,8 +159,17 @@ static const struct {
 #define HOLD_SERVICED           0       /* until the ARM unmasked its event */
 #define HOLD_TAKEN              1       /* until the ARM took it (to SICR) */
 #define HOLD_NONE               2       /* never */
+#define OCP_WRITE_DELAY_MAX     10000000 /* cycles: 50 ms */
+#define DDR_JITTER_MAX          10000   /* cycles */
 #define JITTER_PAUSE_ONE_IN     64      /* a slice in 64 is followed by ... */
 #define JITTER_PAUSE_MAX_US     200     /* ... a pause of up to 200 us */
+
+/* A PRU's store to RAM the knob ocp_write_flight_us holds back */
+typedef struct PrussFlight {
+    uint32_t addr;
+    uint32_t len;
+    uint8_t data[PRUSIM_MAX_BURST];
+} PrussFlight;
 
 typedef struct PrussInput {
     struct prusim_stim stim;
@@ -196,6 +205,8 @@ struct AM335xPrussState {
     uint32_t hold_cap_ms;
     uint32_t jitter_seed;
     uint32_t hold_mode_reset;
+    uint32_t ocp_write_delay_reset;
+    uint32_t ddr_jitter_reset;
 
     /* Under the BQL */
     bool host_level[AM335X_PRUSS_NUM_HOST_IRQS];
@@ -212,13 +223,14 @@ struct AM335xPrussState {
     bool runnable;                  /* the last slice did not end idle */
     bool irq_dirty;                 /* a host interrupt line may have changed */
     bool vm_running;
-    bool ocp_pause;                 /* an OCP write ended the slice */
+    uint32_t ocp_pauses;            /* OCP writes that ended the slice */
     VMChangeStateEntry *vmstate_entry;
 
     struct prusim *s;
     bool stopped_reported[PRUSIM_NUM_CORES];
     char ocp_err[PRUSIM_REASON_LEN];
     uint64_t ocp_errors;
+    uint64_t ocp_writes;            /* OCP stores landed in RAM */
 
     /* pin trace */
     struct prusim_trace_rec *trace;
@@ -281,6 +293,11 @@ struct AM335xPrussState {
     uint32_t freeze;
     uint32_t jitter;
     uint32_t hold_mode;             /* HOLD_*: how long an interrupt holds */
+    uint32_t ocp_write_delay;       /* cycles from a PRU's store to RAM */
+    uint32_t ocp_write_flight_us;   /* knob: and host time before it lands */
+    uint32_t ddr_jitter;            /* knob: DDR accesses up to this longer */
+    PrussFlight flight[PRUSIM_POSTED_LEN];  /* stores held back */
+    unsigned int flight_n;
     GRand *rng;                     /* jitter's, seeded with it */
     uint64_t jitter_slices;
     uint64_t jitter_pauses;
@@ -593,6 +610,49 @@ static bool ocp_is_ram(uint32_t addr, unsigned int len, bool write)
 }
 
 /*
+ * The stores the knob ocp_write_flight_us held back land (in order): after
+ * the thread's wait, or at once when the ARM stops a core (a stop takes
+ * longer on a board than any store's way to RAM).
+ */
+static void flight_land(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    for (i = 0; i < p->flight_n; i++) {
+        PrussFlight *f = &p->flight[i];
+
+        if (address_space_rw(&address_space_memory, f->addr,
+                             MEMTXATTRS_UNSPECIFIED, f->data, f->len,
+                             true) != MEMTX_OK) {
+            snprintf(p->ocp_err, sizeof(p->ocp_err),
+                     "OCP write at 0x%08x failed", f->addr);
+            p->ocp_errors++;
+            qemu_log_mask(LOG_GUEST_ERROR, "am335x-pruss: %s\n", p->ocp_err);
+            continue;
+        }
+        p->ocp_writes++;
+    }
+    p->flight_n = 0;
+}
+
+/* A PRU's load sees the stores held back (they landed for the simulation) */
+static void flight_seen(AM335xPrussState *p, uint32_t addr, uint8_t *buf,
+                        uint32_t len)
+{
+    unsigned int i;
+
+    for (i = 0; i < p->flight_n; i++) {
+        const PrussFlight *f = &p->flight[i];
+        uint64_t lo = MAX(f->addr, addr);
+        uint64_t hi = MIN((uint64_t)f->addr + f->len, (uint64_t)addr + len);
+
+        if (lo < hi) {
+            memcpy(buf + (lo - addr), f->data + (lo - f->addr), hi - lo);
+        }
+    }
+}
+
+/*
  * OCP master port: the AM335x EMIF window 0x80000000..0xbfffffff, where the
  * guest's RAM is (as an AM335x's DDR is).  Only RAM: a device behind the
  * port would need the BQL, which this lock must not wait for.  The check
@@ -616,15 +676,34 @@ static int cb_ocp(AM335xPrussState *p, u32 addr, void *buf, unsigned int len,
                  what, len, addr);
         goto fail;
     }
+    if (write && p->ocp_write_flight_us) {
+        /* knob: the store lands once the thread has waited (flight_land()) */
+        PrussFlight *f;
+
+        if (p->flight_n == ARRAY_SIZE(p->flight)) {
+            flight_land(p);
+        }
+        f = &p->flight[p->flight_n++];
+        f->addr = addr;
+        f->len = len;
+        memcpy(f->data, buf, len);
+        prusim_yield(p->s);
+        return 0;
+    }
     if (address_space_rw(&address_space_memory, addr, MEMTXATTRS_UNSPECIFIED,
                          buf, len, write) != MEMTX_OK) {
         snprintf(p->ocp_err, sizeof(p->ocp_err),
                  "OCP %s at 0x%08x failed", what, addr);
         goto fail;
     }
+    if (write) {
+        p->ocp_writes++;
+    } else {
+        flight_seen(p, addr, buf, len);
+    }
     if (write && p->ocp_write_pause_us) {
         /* knob: the thread pauses after this store (pruss_thread()) */
-        p->ocp_pause = true;
+        p->ocp_pauses++;
         prusim_yield(p->s);
     }
     return 0;
@@ -911,6 +990,14 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
     if (addr >= ICSS_INTC && addr < ICSS_INTC + 0x2000 && size == 4) {
         intc_write_seen(p, addr, v);
     }
+    if (addr == ICSS_CTRL(0) || addr == ICSS_CTRL(1)) {
+        /*
+         * A core's CONTROL: what the cores stored is in RAM before it
+         * stops (on a board a stop takes longer than a store's way there)
+         */
+        prusim_ocp_drain(p->s);
+        flight_land(p);
+    }
     prusim_host_write(p->s, addr, &v, size);
     for (i = 0; i < PRUSIM_NUM_CORES; i++) {
         struct prusim_status st;
@@ -1184,6 +1271,9 @@ enum port_file {
     PF_FREEZE,
     PF_JITTER,
     PF_HOLD_MODE,
+    PF_OCP_WRITE_DELAY,
+    PF_OCP_WRITE_FLIGHT_US,
+    PF_DDR_JITTER,
     PF_INPUT,               /* PF_INPUT + port: input/<name> */
     PF_NUM = PF_INPUT + PRUSIM_NUM_PORTS,
 };
@@ -1196,6 +1286,9 @@ static const char *const port_file_name[PF_NUM] = {
     [PF_FREEZE] = "freeze",
     [PF_JITTER] = "jitter",
     [PF_HOLD_MODE] = "hold_mode",
+    [PF_OCP_WRITE_DELAY] = "ocp_write_delay",
+    [PF_OCP_WRITE_FLIGHT_US] = "ocp_write_flight_us",
+    [PF_DDR_JITTER] = "ddr_jitter",
     [PF_INPUT + PRUSIM_PORT_R31(0)] = "input/r31-0",
     [PF_INPUT + PRUSIM_PORT_R31(1)] = "input/r31-1",
     [PF_INPUT + PRUSIM_PORT_GPIO(0)] = "input/gpio0",
@@ -1325,6 +1418,10 @@ static uint32_t port_stats(AM335xPrussState *p)
              p->holds, p->hold_ns + held,
              MAX(p->hold_max_ns, (uint64_t)held), p->hold_expired,
              p->hold_cap_ms, p->hold_mode);
+    port_add(p, &len, "ocp_writes %" PRIu64 " ocp_write_delay %u"
+             " ocp_write_flight_us %u ddr_jitter %u\n",
+             p->ocp_writes, p->ocp_write_delay, p->ocp_write_flight_us,
+             p->jitter ? p->ddr_jitter : 0);
     port_add(p, &len, "ocp_errors %" PRIu64 "%s%s\n", p->ocp_errors,
              p->ocp_errors ? " last " : "", p->ocp_errors ? p->ocp_err : "");
     port_add(p, &len, "jitter %u slices %" PRIu64 " pauses %" PRIu64
@@ -1399,6 +1496,15 @@ static int port_read(AM335xPrussState *p, unsigned int file, uint32_t *len)
         return 0;
     case PF_HOLD_MODE:
         *len = port_reply(p, "%u\n", p->hold_mode);
+        return 0;
+    case PF_OCP_WRITE_DELAY:
+        *len = port_reply(p, "%u\n", p->ocp_write_delay);
+        return 0;
+    case PF_OCP_WRITE_FLIGHT_US:
+        *len = port_reply(p, "%u\n", p->ocp_write_flight_us);
+        return 0;
+    case PF_DDR_JITTER:
+        *len = port_reply(p, "%u\n", p->ddr_jitter);
         return 0;
     }
     if (file >= PF_INPUT && file < PF_NUM) {
@@ -1483,6 +1589,8 @@ bad:
 static void jitter_seed(AM335xPrussState *p)
 {
     g_rand_set_seed(p->rng, p->jitter);
+    /* the DDR's jitter: from the same seed, only while the knob is on */
+    prusim_set_ddr_jitter(p->s, p->jitter ? p->ddr_jitter : 0, p->jitter);
 }
 
 static int port_write_knob(AM335xPrussState *p, uint32_t *knob, uint32_t max,
@@ -1527,6 +1635,22 @@ static int port_write(AM335xPrussState *p, unsigned int file, uint32_t len,
         return ret;
     case PF_HOLD_MODE:
         return port_write_knob(p, &p->hold_mode, HOLD_NONE, len, reply);
+    case PF_OCP_WRITE_DELAY:
+        ret = port_write_knob(p, &p->ocp_write_delay, OCP_WRITE_DELAY_MAX,
+                              len, reply);
+        if (!ret) {
+            prusim_set_ocp_write_delay(p->s, p->ocp_write_delay);
+        }
+        return ret;
+    case PF_OCP_WRITE_FLIGHT_US:
+        return port_write_knob(p, &p->ocp_write_flight_us, KNOB_MAX_US, len,
+                               reply);
+    case PF_DDR_JITTER:
+        ret = port_write_knob(p, &p->ddr_jitter, DDR_JITTER_MAX, len, reply);
+        if (!ret) {
+            jitter_seed(p);
+        }
+        return ret;
     }
     return -EINVAL;
 }
@@ -1798,8 +1922,16 @@ static void *pruss_thread(void *opaque)
          */
         p->runnable = !p->s->waiting || inputs_pending(p);
         report_stops(p);
-        pause_us = p->ocp_pause ? p->ocp_write_pause_us : 0;
-        p->ocp_pause = false;
+        if (p->flight_n) {
+            /* knob: the ARM runs on while the stores are on their way */
+            qemu_mutex_unlock(&p->lock);
+            g_usleep(p->ocp_write_flight_us);
+            qemu_mutex_lock(&p->lock);
+            flight_land(p);
+        }
+        /* stores that landed in one cycle pause one after the other */
+        pause_us = p->ocp_pauses * p->ocp_write_pause_us;
+        p->ocp_pauses = 0;
         if (p->jitter &&
             !g_rand_int_range(p->rng, 0, JITTER_PAUSE_ONE_IN)) {
             /* knob: the simulation stops a while, the ARM runs on */
@@ -1852,6 +1984,9 @@ static void pruss_reset_state(AM335xPrussState *p)
     prusim_default_config(&cfg);
     /* while every core waits for the ARM, simulated time stands still */
     cfg.stop_when_idle = true;
+    /* a PRU's store reaches RAM later than its next event can */
+    p->ocp_write_delay = p->ocp_write_delay_reset;
+    cfg.ocp_write_delay = p->ocp_write_delay;
     p->event_latency = cfg.event_latency;
     prusim_init(p->s, &cfg, &pruss_sim_ops, p);
     for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
@@ -1883,24 +2018,36 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->expired_lines = 0;
     p->expired_events = 0;
     p->hold_since = 0;
-    p->ocp_pause = false;
+    p->ocp_pauses = 0;
     p->ocp_write_pause_us = 0;
+    p->ocp_write_flight_us = 0;
+    p->flight_n = 0;
     memset(p->strobe, 0, sizeof(p->strobe));
     memset(p->stopped_reported, 0, sizeof(p->stopped_reported));
     p->freeze = 0;
     p->jitter = p->jitter_seed;
+    p->ddr_jitter = p->ddr_jitter_reset;
     jitter_seed(p);
     p->hold_mode = p->hold_mode_reset;
     p->runnable = false;
     p->irq_dirty = true;
 }
 
-static void am335x_pruss_reset(DeviceState *dev)
+/* Resettable: the state in the enter phase, the interrupt lines in hold */
+static void am335x_pruss_reset_enter(Object *obj, ResetType type)
 {
-    AM335xPrussState *p = AM335X_PRUSS(dev);
+    AM335xPrussState *p = AM335X_PRUSS(obj);
 
     pruss_lock(p);
     pruss_reset_state(p);
+    pruss_unlock(p, false);
+}
+
+static void am335x_pruss_reset_hold(Object *obj)
+{
+    AM335xPrussState *p = AM335X_PRUSS(obj);
+
+    pruss_lock(p);
     pruss_update_irqs(p);
     pruss_unlock(p, true);
 }
@@ -1914,6 +2061,20 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
 
     if (!p->slice_cycles) {
         error_setg(errp, "slice-cycles must be at least 1");
+        return;
+    }
+    if (p->hold_mode_reset > HOLD_NONE) {
+        error_setg(errp, "hold-mode must be 0, 1 or 2");
+        return;
+    }
+    if (p->ddr_jitter_reset > DDR_JITTER_MAX) {
+        error_setg(errp, "ddr-jitter must be at most %u cycles",
+                   DDR_JITTER_MAX);
+        return;
+    }
+    if (p->ocp_write_delay_reset > OCP_WRITE_DELAY_MAX) {
+        error_setg(errp, "ocp-write-delay must be at most %u cycles",
+                   OCP_WRITE_DELAY_MAX);
         return;
     }
 
@@ -2004,6 +2165,11 @@ static Property am335x_pruss_props[] = {
     /* the hold at reset: 0 until serviced, 1 until taken, 2 none */
     DEFINE_PROP_UINT32("hold-mode", AM335xPrussState, hold_mode_reset,
                        HOLD_TAKEN),
+    /* PRU cycles from a store over the OCP master port until it lands */
+    DEFINE_PROP_UINT32("ocp-write-delay", AM335xPrussState,
+                       ocp_write_delay_reset, 100),
+    /* while the jitter knob is on: each DDR access up to this much longer */
+    DEFINE_PROP_UINT32("ddr-jitter", AM335xPrussState, ddr_jitter_reset, 0),
     DEFINE_PROP_END_OF_LIST(),
 };
 
@@ -2016,10 +2182,12 @@ static const VMStateDescription vmstate_am335x_pruss = {
 static void am335x_pruss_class_init(ObjectClass *klass, void *data)
 {
     DeviceClass *dc = DEVICE_CLASS(klass);
+    ResettableClass *rc = RESETTABLE_CLASS(klass);
 
     dc->realize = am335x_pruss_realize;
     dc->unrealize = am335x_pruss_unrealize;
-    dc->reset = am335x_pruss_reset;
+    rc->phases.enter = am335x_pruss_reset_enter;
+    rc->phases.hold = am335x_pruss_reset_hold;
     dc->vmsd = &vmstate_am335x_pruss;
     dc->desc = "AM335x PRU-ICSS (prukit's prusim), GPIO banks and pads";
     dc->user_creatable = false;

@@ -51,7 +51,10 @@
 # one; 0 is off.  Every boot prints its seed.  PRUKIT_VM_HOLD=taken (the
 # default), serviced or none: how long an interrupt towards the ARM holds
 # simulated time (until the ARM took its event, until it serviced it,
-# never).
+# never).  PRUKIT_VM_OCP_WRITE_DELAY=CYCLES (default 100): how long a PRU's
+# store over the OCP master port takes to land in RAM (0: at once).
+# PRUKIT_VM_DDR_JITTER=CYCLES (default 0): while the jitter seed is not 0,
+# each DDR load or store of a PRU takes up to this many cycles longer.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -101,6 +104,12 @@ taken) hold_mode=1 ;;
 none) hold_mode=2 ;;
 *) die "PRUKIT_VM_HOLD=$PRUKIT_VM_HOLD: serviced, taken or none" ;;
 esac
+ocp_write_delay=${PRUKIT_VM_OCP_WRITE_DELAY:-100}
+[[ "$ocp_write_delay" =~ ^[0-9]{1,8}$ ]] && [ "$ocp_write_delay" -le 10000000 ] ||
+	die "PRUKIT_VM_OCP_WRITE_DELAY=$ocp_write_delay: PRU cycles from 0 to 10000000"
+ddr_jitter=${PRUKIT_VM_DDR_JITTER:-0}
+[[ "$ddr_jitter" =~ ^[0-9]{1,5}$ ]] && [ "$ddr_jitter" -le 10000 ] ||
+	die "PRUKIT_VM_DDR_JITTER=$ddr_jitter: PRU cycles from 0 to 10000"
 # The board's sound device needs no host audio.
 export QEMU_AUDIO_DRV=none
 
@@ -324,7 +333,9 @@ boot() {
 	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
 	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log"
 		-global "am335x-pruss.jitter-seed=$jitter"
-		-global "am335x-pruss.hold-mode=$hold_mode")
+		-global "am335x-pruss.hold-mode=$hold_mode"
+		-global "am335x-pruss.ocp-write-delay=$ocp_write_delay"
+		-global "am335x-pruss.ddr-jitter=$ddr_jitter")
 	[ "$jitter" = 0 ] || msg "the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"

@@ -30,6 +30,8 @@
 #define PRUSIM_NUM_HOSTS	10
 #define PRUSIM_GPIO_BANKS	4
 #define PRUSIM_QUEUE_LEN	64
+#define PRUSIM_POSTED_LEN	8	/* OCP stores on their way at once */
+#define PRUSIM_MAX_BURST	124	/* bytes of one LBBO/SBBO */
 #define PRUSIM_REASON_LEN	96
 
 /*
@@ -107,6 +109,17 @@ enum prusim_lat {
  * @r31_sync_delay: age in cycles of the R31 input value a core reads
  * @event_latency: cycles from an R31 event strobe until the event is seen in
  *	the INTC (and in R31 bits 30/31 of a reader); 1..16
+ * @ocp_write_delay: cycles from the issue of a store over the OCP master
+ *	port (not to a GPIO bank) until it lands (&prusim_ops.ocp_write); 0:
+ *	it lands as it issues.  Stores land in order; at most
+ *	%PRUSIM_POSTED_LEN are on their way (another stalls the core).  A
+ *	load over the port travels behind them: it sees them and completes
+ *	no earlier than the cycle after the last one landed.  An event strobed
+ *	after a store can reach the INTC (and the ARM) before it lands.
+ * @ddr_jitter: up to this many cycles more for each load from DDR and each
+ *	store's way there (0: none), the same for the same @jitter_seed,
+ *	cycle and address
+ * @jitter_seed: seed of @ddr_jitter
  * @no_skip: never skip idle cycles (for instruction tracing)
  * @stop_when_idle: when every core waits for something only the outside
  *	can bring (a waiting loop, SLP, HALT, no queued action, no announced
@@ -127,6 +140,9 @@ struct prusim_config {
 	u16 gpio_write_interval;
 	u16 r31_sync_delay;
 	u16 event_latency;
+	u32 ocp_write_delay;
+	u16 ddr_jitter;
+	u32 jitter_seed;
 	bool no_skip;
 	bool stop_when_idle;
 	bool irq_map_by_embedder;
@@ -398,7 +414,8 @@ struct prusim_gpio {
 /**
  * struct prusim_timed - an action scheduled for a later cycle (private)
  * @cycle: when it takes effect
- * @kind: PRUSIM_TIMED_EVENT or PRUSIM_TIMED_GPIO
+ * @kind: PRUSIM_TIMED_EVENT, PRUSIM_TIMED_GPIO or PRUSIM_TIMED_OCP (the
+ *	oldest of &prusim.posted lands)
  * @bank: GPIO bank
  * @reg: GPIO register offset
  * @value: system event number or register value
@@ -411,6 +428,20 @@ struct prusim_timed {
 	u16 reg;
 	u32 value;
 	u32 mask;
+};
+
+/**
+ * struct prusim_posted - a store over the OCP master port on its way (private)
+ * @addr: OCP address
+ * @len: bytes
+ * @core: the core that stored it (stopped if it cannot land)
+ * @data: the bytes
+ */
+struct prusim_posted {
+	u32 addr;
+	u8 len;
+	u8 core;
+	u8 data[PRUSIM_MAX_BURST];
 };
 
 /**
@@ -441,6 +472,10 @@ struct prusim_timed {
  * @gpio_free: first cycle at which the GPIO banks accept another write
  * @queue: scheduled actions sorted by cycle
  * @queued: entries in @queue
+ * @posted: OCP stores on their way, oldest at @posted_head
+ * @posted_head: index of the oldest entry of @posted
+ * @posted_n: entries in @posted
+ * @posted_due: the cycle at which the newest of them lands
  */
 struct prusim {
 	struct prusim_config cfg;
@@ -467,6 +502,10 @@ struct prusim {
 	u64 gpio_free;
 	struct prusim_timed queue[PRUSIM_QUEUE_LEN];
 	unsigned int queued;
+	struct prusim_posted posted[PRUSIM_POSTED_LEN];
+	unsigned int posted_head;
+	unsigned int posted_n;
+	u64 posted_due;
 };
 
 /**
@@ -527,6 +566,9 @@ int prusim_write_iram(struct prusim *s, unsigned int core, u32 offset,
 /* Running (prusim_core.c) */
 u64 prusim_run(struct prusim *s, u64 max_cycles);
 bool prusim_active(const struct prusim *s);
+void prusim_set_ocp_write_delay(struct prusim *s, u32 cycles);
+void prusim_ocp_drain(struct prusim *s);
+void prusim_set_ddr_jitter(struct prusim *s, u16 cycles, u32 seed);
 void prusim_get_status(const struct prusim *s, unsigned int core,
 		       struct prusim_status *st);
 void prusim_input_changed(struct prusim *s, unsigned int port);

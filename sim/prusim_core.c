@@ -1558,6 +1558,31 @@ int prusim_write_iram(struct prusim *s, unsigned int core, u32 offset, const voi
 }
 
 /**
+ * prusim_set_ocp_write_delay() - change &prusim_config.ocp_write_delay
+ * @s: simulator
+ * @cycles: the new delay
+ *
+ * Stores on their way land when they were due to; later ones land after
+ * them, however short the new delay.
+ */
+void prusim_set_ocp_write_delay(struct prusim *s, u32 cycles)
+{
+	s->cfg.ocp_write_delay = cycles;
+}
+
+/**
+ * prusim_set_ddr_jitter() - change &prusim_config.ddr_jitter and its seed
+ * @s: simulator
+ * @cycles: the most a DDR access may take longer
+ * @seed: the seed
+ */
+void prusim_set_ddr_jitter(struct prusim *s, u16 cycles, u32 seed)
+{
+	s->cfg.ddr_jitter = cycles;
+	s->cfg.jitter_seed = seed;
+}
+
+/**
  * prusim_active() - can anything still happen?
  * @s: simulator
  *

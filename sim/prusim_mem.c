@@ -80,6 +80,9 @@ void prusim_mem_reset(struct prusim *s)
 	s->gpio_free = 0;
 	s->queued = 0;
 	s->next_event = PRUSIM_NEVER;
+	s->posted_head = 0;
+	s->posted_n = 0;
+	s->posted_due = 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -173,6 +176,52 @@ void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value)
 	s->epoch++;
 }
 
+static int ocp_failed(struct prusim *s, struct prusim_core *c, const char *what, u32 addr,
+		      u32 len, int ret)
+{
+	prusim_stop(s, c, "OCP %s of %u bytes at 0x%08x failed (%d)", what, len, addr, ret);
+	return ret;
+}
+
+/* The oldest posted OCP store lands (a PRUSIM_TIMED_OCP action) */
+static void posted_land(struct prusim *s)
+{
+	struct prusim_posted *p = &s->posted[s->posted_head];
+	int ret;
+
+	s->posted_head = (s->posted_head + 1) % PRUSIM_POSTED_LEN;
+	s->posted_n--;
+	ret = s->ops.ocp_write ? s->ops.ocp_write(s->ctx, p->addr, p->data, p->len) : -ENODEV;
+	if (ret)
+		ocp_failed(s, &s->core[p->core], "write (posted)", p->addr, p->len, ret);
+	s->epoch++;
+}
+
+/**
+ * prusim_ocp_drain() - land every store on its way over the OCP master port
+ * @s: simulator
+ *
+ * For an embedder whose outside world must see them before it goes on (the
+ * ARM stopping a core and then freeing the memory the core wrote to: on a
+ * board a stop takes longer than any store's way there).  They land in
+ * order, through &prusim_ops.ocp_write, at &prusim.now.
+ */
+void prusim_ocp_drain(struct prusim *s)
+{
+	unsigned int i = 0;
+
+	while (i < s->queued) {
+		if (s->queue[i].kind != PRUSIM_TIMED_OCP) {
+			i++;
+			continue;
+		}
+		s->queued--;
+		memmove(&s->queue[i], &s->queue[i + 1], (s->queued - i) * sizeof(s->queue[0]));
+		posted_land(s);
+	}
+	s->next_event = s->queued ? s->queue[0].cycle : PRUSIM_NEVER;
+}
+
 /**
  * prusim_queue_run() - apply every action that is due at &prusim.now
  * @s: simulator
@@ -186,6 +235,8 @@ void prusim_queue_run(struct prusim *s)
 		memmove(&s->queue[0], &s->queue[1], s->queued * sizeof(s->queue[0]));
 		if (t.kind == PRUSIM_TIMED_EVENT)
 			prusim_intc_event(s, t.value);
+		else if (t.kind == PRUSIM_TIMED_OCP)
+			posted_land(s);
 		else
 			gpio_land(s, &t);
 	}
@@ -915,11 +966,77 @@ static int ocp_route(struct prusim *s, struct prusim_core *c, u32 *addr, u32 len
 	return bank;
 }
 
-static int ocp_failed(struct prusim *s, struct prusim_core *c, const char *what, u32 addr,
-		      u32 len, int ret)
+/*
+ * Extra cycles of a DDR access at @addr issued now (&prusim_config.ddr_jitter):
+ * a hash of the seed, the cycle and the address, so that a run gives the
+ * same figures whether or not idle loops were skipped.
+ */
+static u32 ddr_jitter(const struct prusim *s, u32 addr)
 {
-	prusim_stop(s, c, "OCP %s of %u bytes at 0x%08x failed (%d)", what, len, addr, ret);
-	return ret;
+	u64 x = s->now ^ ((u64)addr << 32) ^ ((u64)s->cfg.jitter_seed * 0x9e3779b97f4a7c15ull);
+
+	if (!s->cfg.ddr_jitter || addr < 0x80000000u || addr >= 0xc0000000u)
+		return 0;
+	/* splitmix64's finaliser */
+	x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+	x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+	x ^= x >> 31;
+	return ((u32)x ^ (u32)(x >> 32)) % ((u32)s->cfg.ddr_jitter + 1);
+}
+
+/*
+ * A load over the OCP master port travels behind the stores on their way:
+ * it sees their bytes (they land before it is served) and completes no
+ * earlier than the cycle after the last one landed.  Each still lands at its
+ * own cycle for everyone else.
+ */
+static void posted_behind(struct prusim *s, u32 addr, u8 *buf, u32 len,
+			  struct prusim_access *acc)
+{
+	unsigned int i;
+
+	for (i = 0; i < s->posted_n; i++) {
+		const struct prusim_posted *p =
+			&s->posted[(s->posted_head + i) % PRUSIM_POSTED_LEN];
+		u32 lo = p->addr > addr ? p->addr : addr;
+		u32 hi = prusim_min_u64((u64)p->addr + p->len, (u64)addr + len);
+
+		if (lo < hi)
+			memcpy(buf + (lo - addr), p->data + (lo - p->addr), hi - lo);
+	}
+	if (s->posted_due + 1 > s->now + acc->cycles)
+		acc->cycles = s->posted_due + 1 - s->now;
+}
+
+/*
+ * A store over the OCP master port (not to a GPIO bank) is posted: it lands
+ * &prusim_config.ocp_write_delay cycles after it issued, after the stores
+ * before it.  With %PRUSIM_POSTED_LEN on their way the core stalls.
+ */
+static int ocp_post(struct prusim *s, struct prusim_core *c, u32 addr, const u8 *buf,
+		    u32 len, struct prusim_access *acc)
+{
+	struct prusim_timed t = { .kind = PRUSIM_TIMED_OCP };
+	struct prusim_posted *p;
+
+	if (s->posted_n == PRUSIM_POSTED_LEN ||
+	    s->queued >= PRUSIM_QUEUE_LEN - PRUSIM_QUEUE_EVENT_RESERVE) {
+		acc->retry = true;
+		return 0;
+	}
+	p = &s->posted[(s->posted_head + s->posted_n) % PRUSIM_POSTED_LEN];
+	p->addr = addr;
+	p->len = len;
+	p->core = c->index;
+	memcpy(p->data, buf, len);
+	s->posted_n++;
+	t.cycle = s->now + s->cfg.ocp_write_delay + ddr_jitter(s, addr);
+	if (t.cycle < s->posted_due)
+		t.cycle = s->posted_due;
+	s->posted_due = t.cycle;
+	prusim_queue_push(s, &t);
+	acc->cycles = prusim_write_cycles(s, len);
+	return 0;
 }
 
 static int ocp_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, u32 len,
@@ -935,9 +1052,13 @@ static int ocp_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, 
 		acc->cycles = prusim_read_cycles(s, bank ? PRUSIM_LAT_GPIO : PRUSIM_LAT_GPIO0, len);
 		return 0;
 	}
-	acc->cycles = prusim_read_cycles(s, ocp_lat(addr), len);
+	acc->cycles = prusim_read_cycles(s, ocp_lat(addr), len) + ddr_jitter(s, addr);
 	ret = s->ops.ocp_read ? s->ops.ocp_read(s->ctx, addr, buf, len) : -ENODEV;
-	return ret ? ocp_failed(s, c, "read", addr, len, ret) : 0;
+	if (ret)
+		return ocp_failed(s, c, "read", addr, len, ret);
+	if (s->posted_n)
+		posted_behind(s, addr, buf, len, acc);
+	return 0;
 }
 
 static int ocp_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8 *buf, u32 len,
@@ -952,6 +1073,8 @@ static int ocp_write(struct prusim *s, struct prusim_core *c, u32 addr, const u8
 		gpio_write(s, bank, addr - prusim_gpio_base[bank], buf, len, acc);
 		return 0;
 	}
+	if (s->cfg.ocp_write_delay || s->posted_n)
+		return ocp_post(s, c, addr, buf, len, acc);
 	acc->cycles = prusim_write_cycles(s, len);
 	ret = s->ops.ocp_write ? s->ops.ocp_write(s->ctx, addr, buf, len) : -ENODEV;
 	return ret ? ocp_failed(s, c, "write", addr, len, ret) : 0;

@@ -35,6 +35,7 @@
 /* Kinds of &struct prusim_timed */
 #define PRUSIM_TIMED_EVENT	0
 #define PRUSIM_TIMED_GPIO	1
+#define PRUSIM_TIMED_OCP	2
 
 /* &struct prusim_core.loop_end when no hardware loop is active */
 #define PRUSIM_NO_LOOP		0xffffffffu

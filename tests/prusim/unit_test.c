@@ -4,7 +4,7 @@
  * ELF loader (accepts, rejects, resource table, .pru_irq_map), host access
  * and CTRL semantics, events raised by the embedder, the host interrupt
  * callback, how often the input callback is called and the shared stimulus
- * parser and lookup (sim/prusim_stim.c).
+ * parser and lookup (sim/prusim_stim.c), posted OCP stores.
  *
  * usage: unit_test FW.elf RSC_OFFSET RSC_SIZE
  *   FW.elf is a firmware with a .resource_table and a two-entry
@@ -1045,6 +1045,126 @@ static void test_unmodelled(void)
 	free(s);
 }
 
+struct posted_log {
+	u8 ddr[16];
+	unsigned int writes;
+	u64 cycle[4];
+	u64 irq_cycle;
+	struct prusim *s;
+};
+
+static int posted_read(void *ctx, u32 addr, void *buf, unsigned int len)
+{
+	struct posted_log *log = ctx;
+
+	if (addr < 0x80000000u || addr - 0x80000000u + len > sizeof(log->ddr))
+		return -EFAULT;
+	memcpy(buf, log->ddr + (addr - 0x80000000u), len);
+	return 0;
+}
+
+static int posted_write(void *ctx, u32 addr, const void *buf, unsigned int len)
+{
+	struct posted_log *log = ctx;
+
+	if (addr < 0x80000000u || addr - 0x80000000u + len > sizeof(log->ddr))
+		return -EFAULT;
+	memcpy(log->ddr + (addr - 0x80000000u), buf, len);
+	if (log->writes < ARRAY_SIZE(log->cycle))
+		log->cycle[log->writes] = log->s->now;
+	log->writes++;
+	return 0;
+}
+
+static void posted_irq(void *ctx, u64 cycle, unsigned int host __always_unused, bool level)
+{
+	struct posted_log *log = ctx;
+
+	if (level && !log->irq_cycle)
+		log->irq_cycle = cycle;
+}
+
+/*
+ * With ocp_write_delay 200 a store to DDR issued in cycle 3 lands in 203 and
+ * the next (cycle 5) in 205; the event strobed between them reaches the ARM
+ * in cycle 5, long before its data.  A load issued in cycle 6 sees the
+ * second store and completes in cycle 206 (the halt's).
+ */
+static void test_posted(void)
+{
+	static const u32 prog[] = {
+		0x248000e3u,	/* ldi ra, 0x8000 */
+		0x0910e3e3u,	/* lsl ra, ra, 16 */
+		0x241234e1u,	/* ldi r1, 0x1234 */
+		0xe1002381u,	/* sbbo &r1, ra, 0, 4 */
+		LDI_R31(32 | 4),	/* event 20 */
+		0xe1042381u,	/* sbbo &r1, ra, 4, 4 */
+		0xf1042384u,	/* lbbo &r4, ra, 4, 4 */
+		HALT,
+	};
+	const struct prusim_ops ops = {
+		.ocp_read = posted_read, .ocp_write = posted_write, .host_irq = posted_irq,
+	};
+	struct prusim *s = calloc(1, sizeof(*s));
+	struct posted_log log;
+	struct prusim_config cfg;
+	struct prusim_status st;
+	u32 control = 0x2, word;
+
+	if (!s) {
+		perror("calloc");
+		exit(2);
+	}
+	memset(&log, 0, sizeof(log));
+	log.s = s;
+	prusim_default_config(&cfg);
+	cfg.ocp_write_delay = 200;
+	prusim_init(s, &cfg, &ops, &log);
+	put_words(s, 0, prog, ARRAY_SIZE(prog));
+	intc_route(s, 20, 3, 5);
+	control = 0x0a;					/* SYSCFG: STANDBY_INIT off */
+	prusim_host_write(s, 0x26004, &control, 4);
+	control = 0x2;
+	prusim_host_write(s, 0x22000, &control, 4);		/* PRU0 CONTROL: EN */
+	prusim_run(s, 100);
+	memcpy(&word, log.ddr, 4);
+	check(log.irq_cycle == 5 && log.writes == 0 && word == 0, "posted-event-beats-data",
+	      "interrupt at %llu, %u stores landed, DDR word 0x%x at cycle 100",
+	      (unsigned long long)log.irq_cycle, log.writes, word);
+	prusim_run(s, 200);
+	prusim_get_status(s, 0, &st);
+	memcpy(&word, log.ddr + 4, 4);
+	check(log.writes == 2 && log.cycle[0] == 203 && log.cycle[1] == 205 && word == 0x1234,
+	      "posted-lands-in-order", "%u stores, at %llu and %llu, second word 0x%x",
+	      log.writes, (unsigned long long)log.cycle[0], (unsigned long long)log.cycle[1],
+	      word);
+	check(st.state == PRUSIM_HALTED && st.regs[4] == 0x1234 && st.pc == 7 &&
+	      st.insns == 8 && st.stalls == 199, "posted-load-behind",
+	      "state %d r4 0x%x pc %u, %llu instructions, %llu stall cycles", st.state,
+	      st.regs[4], st.pc, (unsigned long long)st.insns, (unsigned long long)st.stalls);
+
+	/* the embedder lands both at once (the ARM stops a core), in order */
+	memset(&log, 0, sizeof(log));
+	log.s = s;
+	prusim_init(s, &cfg, &ops, &log);
+	put_words(s, 0, prog, ARRAY_SIZE(prog));
+	control = 0x0a;
+	prusim_host_write(s, 0x26004, &control, 4);
+	control = 0x2;
+	prusim_host_write(s, 0x22000, &control, 4);
+	prusim_run(s, 10);
+	prusim_ocp_drain(s);
+	check(log.writes == 2 && log.cycle[0] == 10 && log.cycle[1] == 10, "posted-drain",
+	      "%u stores landed, at %llu and %llu", log.writes,
+	      (unsigned long long)log.cycle[0], (unsigned long long)log.cycle[1]);
+	prusim_run(s, 300);
+	prusim_get_status(s, 0, &st);
+	check(log.writes == 2 && st.state == PRUSIM_HALTED && st.regs[4] == 0x1234,
+	      "posted-drain-once", "%u stores landed, state %d r4 0x%x", log.writes, st.state,
+	      st.regs[4]);
+	free(s);
+}
+
 int main(int argc, char **argv)
 {
 	if (argc != 4) {
@@ -1061,5 +1181,6 @@ int main(int argc, char **argv)
 	test_stim_errors();
 	test_stim_fuzz();
 	test_unmodelled();
+	test_posted();
 	return failures ? 1 : 0;
 }

@@ -384,14 +384,25 @@ static int set_config(struct prusim_config *cfg, const char *arg)
 		{ "gpio_write_interval", offsetof(struct prusim_config, gpio_write_interval) },
 		{ "r31_sync_delay", offsetof(struct prusim_config, r31_sync_delay) },
 		{ "event_latency", offsetof(struct prusim_config, event_latency) },
+		{ "ddr_jitter", offsetof(struct prusim_config, ddr_jitter) },
 	};
 	const char *eq = strchr(arg, '=');
 	uint64_t v;
 	size_t i, n;
 
-	if (!eq || parse_size(eq + 1, &v) || v > UINT16_MAX)
+	if (!eq || parse_size(eq + 1, &v) || v > UINT32_MAX)
 		return -EINVAL;
 	n = eq - arg;
+	if (n == strlen("ocp_write_delay") && !strncmp(arg, "ocp_write_delay", n)) {
+		cfg->ocp_write_delay = v;
+		return 0;
+	}
+	if (n == strlen("jitter_seed") && !strncmp(arg, "jitter_seed", n)) {
+		cfg->jitter_seed = v;
+		return 0;
+	}
+	if (v > UINT16_MAX)
+		return -EINVAL;
 	for (i = 0; i < PRUSIM_NUM_LAT; i++) {
 		if (strlen(lat_names[i]) == n && !strncmp(arg, lat_names[i], n)) {
 			cfg->read_latency[i] = v;

@@ -66,7 +66,9 @@ def run(prusim, fw, work, unit, div, mode, nbufs, bufsize, periods, trig=(0, 0, 
            "--max-cycles", str(cycles or (samples + 2) * 2 * div + 5000),
            "--dump", "%s:0x8:%d:%s/d0.bin" % (st, SIZE, work),
            "--dump", "%s:0x8:56:%s/d1.bin" % (sa, work),
-           "--dump", "0x%x:%d:%s/ddr.bin" % (DDR, total, work)]
+           "--dump", "0x%x:%d:%s/ddr.bin" % (DDR, total, work),
+           # stores to DDR land as late as in the VM (scripts/vm.sh)
+           "-C", "ocp_write_delay=" + os.environ.get("BL_OCP_WRITE_DELAY", "100")]
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode:
         print(r.stderr)

@@ -44,4 +44,18 @@ static inline void prukit_ocp_write(uint32_t dst, const void *src, uint32_t len)
 	prukit_ocp_copy(dst, (uint32_t)(uintptr_t)src, len);
 }
 
+/*
+ * Return only once every store this core made over the OCP master port has
+ * landed.  Stores there are posted: the core goes on at once, and an event
+ * it strobes next can reach the ARM before the data does.  A load from the
+ * same memory travels behind the stores and returns only after them, so
+ * this reads back one word at addr (best the last one written).  Costs one
+ * load from there (DDR: 43 cycles or more).  Call it before the event (or
+ * the status word in the core's own RAM) that tells Linux the data is there.
+ */
+static inline void prukit_ocp_flush(uint32_t addr)
+{
+	(void)*(volatile uint32_t *)(uintptr_t)addr;
+}
+
 #endif /* _PRUKIT_OCP_H */
