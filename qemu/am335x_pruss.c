@@ -610,29 +610,36 @@ static bool ocp_is_ram(uint32_t addr, unsigned int len, bool write)
 }
 
 /*
- * The stores the knob ocp_write_flight_us held back land (in order): after
- * the thread's wait, or at once when the ARM stops a core (a stop takes
- * longer on a board than any store's way to RAM).
+ * The stores the knob ocp_write_flight_us held back land in order: each after
+ * its own wait in the thread (knob_waits()), or all at once when the ARM
+ * stops a core (a stop takes longer on a board than any store's way to RAM).
  */
-static void flight_land(AM335xPrussState *p)
+static void flight_land_one(AM335xPrussState *p)
 {
-    unsigned int i;
+    PrussFlight *f = &p->flight[0];
 
-    for (i = 0; i < p->flight_n; i++) {
-        PrussFlight *f = &p->flight[i];
-
-        if (address_space_rw(&address_space_memory, f->addr,
-                             MEMTXATTRS_UNSPECIFIED, f->data, f->len,
-                             true) != MEMTX_OK) {
-            snprintf(p->ocp_err, sizeof(p->ocp_err),
-                     "OCP write at 0x%08x failed", f->addr);
-            p->ocp_errors++;
-            qemu_log_mask(LOG_GUEST_ERROR, "am335x-pruss: %s\n", p->ocp_err);
-            continue;
-        }
+    if (!p->flight_n) {
+        return;
+    }
+    if (address_space_rw(&address_space_memory, f->addr,
+                         MEMTXATTRS_UNSPECIFIED, f->data, f->len,
+                         true) != MEMTX_OK) {
+        snprintf(p->ocp_err, sizeof(p->ocp_err),
+                 "OCP write at 0x%08x failed", f->addr);
+        p->ocp_errors++;
+        qemu_log_mask(LOG_GUEST_ERROR, "am335x-pruss: %s\n", p->ocp_err);
+    } else {
         p->ocp_writes++;
     }
-    p->flight_n = 0;
+    p->flight_n--;
+    memmove(&p->flight[0], &p->flight[1], p->flight_n * sizeof(p->flight[0]));
+}
+
+static void flight_land(AM335xPrussState *p)
+{
+    while (p->flight_n) {
+        flight_land_one(p);
+    }
 }
 
 /* A PRU's load sees the stores held back (they landed for the simulation) */
@@ -940,12 +947,22 @@ static void pruss_unlock(AM335xPrussState *p, bool kick)
 /* ------------------------------------------------------------------ */
 /* PRU-ICSS                                                            */
 
+/*
+ * Every ARM access to the PRU-ICSS first lands the PRUs' stores on their way
+ * to RAM (prusim_ocp_drain()).  On a board a store reaches DDR within a
+ * fraction of a microsecond, sooner than Linux reacts to anything the PRU
+ * did after it (an interrupt's HIPIR read, a status word's load); here the
+ * simulation's thread may get no host CPU while the emulated ARM runs on,
+ * and a store could wait for milliseconds.  The knob ocp_write_flight_us
+ * holds stores back past this on purpose.
+ */
 static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
 {
     AM335xPrussState *p = opaque;
     uint32_t v = 0;
 
     pruss_lock(p);
+    prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, false)) {
         pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx,
                     size, addr);
@@ -957,7 +974,8 @@ static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
         size == 4 && v < PRUSIM_NUM_EVENTS) {
         p->taken |= 1ull << v;
     }
-    pruss_unlock(p, false);
+    /* stores the drain left to the knobs are the thread's to land */
+    pruss_unlock(p, p->flight_n || p->ocp_pauses);
     trace_am335x_pruss_read(addr, size, v);
     return v;
 }
@@ -972,6 +990,7 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
 
     trace_am335x_pruss_write(addr, size, v);
     pruss_lock(p);
+    prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, true)) {
         pruss_unimp(p,
                     "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx " (0x%x)",
@@ -991,11 +1010,7 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
         intc_write_seen(p, addr, v);
     }
     if (addr == ICSS_CTRL(0) || addr == ICSS_CTRL(1)) {
-        /*
-         * A core's CONTROL: what the cores stored is in RAM before it
-         * stops (on a board a stop takes longer than a store's way there)
-         */
-        prusim_ocp_drain(p->s);
+        /* a core's CONTROL: even the knob's stores land before it stops */
         flight_land(p);
     }
     prusim_host_write(p->s, addr, &v, size);
@@ -1872,6 +1887,31 @@ static void report_stops(AM335xPrussState *p)
     }
 }
 
+/*
+ * The knobs' waits, without the lock (the ARM runs on): each store
+ * ocp_write_flight_us holds back lands after its own wait, one after the
+ * other; then ocp_write_pause_us for each store that landed.  The PRUs run
+ * no cycle meanwhile, so nothing they do after a store overtakes it.
+ */
+static void knob_waits(AM335xPrussState *p)
+{
+    uint64_t pause_us;
+
+    while (p->flight_n) {
+        qemu_mutex_unlock(&p->lock);
+        g_usleep(p->ocp_write_flight_us);
+        qemu_mutex_lock(&p->lock);
+        flight_land_one(p);
+    }
+    pause_us = (uint64_t)p->ocp_pauses * p->ocp_write_pause_us;
+    p->ocp_pauses = 0;
+    if (pause_us) {
+        qemu_mutex_unlock(&p->lock);
+        g_usleep(pause_us);
+        qemu_mutex_lock(&p->lock);
+    }
+}
+
 static void *pruss_thread(void *opaque)
 {
     AM335xPrussState *p = opaque;
@@ -1892,6 +1932,8 @@ static void *pruss_thread(void *opaque)
             qemu_cond_wait(&p->wake, &p->lock);
             continue;
         }
+        /* before the PRUs go on: what an ARM access drained into the knobs */
+        knob_waits(p);
         if (pruss_held(p, &wait_ms)) {
             qemu_cond_timedwait(&p->wake, &p->lock, wait_ms);
             continue;
@@ -1922,16 +1964,8 @@ static void *pruss_thread(void *opaque)
          */
         p->runnable = !p->s->waiting || inputs_pending(p);
         report_stops(p);
-        if (p->flight_n) {
-            /* knob: the ARM runs on while the stores are on their way */
-            qemu_mutex_unlock(&p->lock);
-            g_usleep(p->ocp_write_flight_us);
-            qemu_mutex_lock(&p->lock);
-            flight_land(p);
-        }
-        /* stores that landed in one cycle pause one after the other */
-        pause_us = p->ocp_pauses * p->ocp_write_pause_us;
-        p->ocp_pauses = 0;
+        knob_waits(p);
+        pause_us = 0;
         if (p->jitter &&
             !g_rand_int_range(p->rng, 0, JITTER_PAUSE_ONE_IN)) {
             /* knob: the simulation stops a while, the ARM runs on */
@@ -1941,7 +1975,7 @@ static void *pruss_thread(void *opaque)
             p->jitter_pause_ns += jitter_us * SCALE_US;
         }
         if (pause_us) {
-            /* knob: the ARM runs while the firmware sits after its store */
+            /* knob: the simulation stops a while, the ARM runs on */
             qemu_mutex_unlock(&p->lock);
             g_usleep(pause_us);
             qemu_mutex_lock(&p->lock);
