@@ -37,7 +37,8 @@ STATES = ["disabled", "running", "sleeping", "halted", "stopped"]
 LAT_NAMES = ["dram", "shared", "intc", "ctrl", "cfg", "iep", "gpio0", "gpio", "ocmc", "ddr",
              "prcm", "ocp"]
 CFG_NAMES = ["read_word_cycles", "write_cycles", "write_word_cycles", "gpio_write_latency",
-             "gpio_write_interval", "r31_sync_delay", "event_latency"]
+             "gpio_write_interval", "r31_sync_delay", "event_latency", "ocp_write_delay",
+             "ddr_jitter", "jitter_seed"]
 CORE_FIELDS = {"pc": "PK_PC", "instructions": "PK_INSNS", "stalls": "PK_STALLS",
                "cycle_counter": "PK_CYCLE_CNT", "stall_counter": "PK_STALL_CNT"}
 TOP_FIELDS = {"cycles": "PK_CYCLES", "pin_changes": "PK_PIN_CHANGES",

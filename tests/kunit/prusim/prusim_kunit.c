@@ -213,6 +213,15 @@ static void pk_set_config(struct prusim_config *cfg, const struct prusim_kunit_c
 	case PK_CFG_EVENT_LATENCY:
 		cfg->event_latency = c->value;
 		break;
+	case PK_CFG_OCP_WRITE_DELAY:
+		cfg->ocp_write_delay = c->value;
+		break;
+	case PK_CFG_DDR_JITTER:
+		cfg->ddr_jitter = c->value;
+		break;
+	case PK_CFG_JITTER_SEED:
+		cfg->jitter_seed = c->value;
+		break;
 	default:
 		if (c->param < PRUSIM_NUM_LAT)
 			cfg->read_latency[c->param] = c->value;

@@ -124,6 +124,9 @@ struct prusim_kunit_kick {
 #define PK_CFG_GPIO_WRITE_INTERVAL	(PRUSIM_NUM_LAT + 4)
 #define PK_CFG_R31_SYNC_DELAY		(PRUSIM_NUM_LAT + 5)
 #define PK_CFG_EVENT_LATENCY		(PRUSIM_NUM_LAT + 6)
+#define PK_CFG_OCP_WRITE_DELAY		(PRUSIM_NUM_LAT + 7)
+#define PK_CFG_DDR_JITTER		(PRUSIM_NUM_LAT + 8)
+#define PK_CFG_JITTER_SEED		(PRUSIM_NUM_LAT + 9)
 
 /**
  * struct prusim_kunit_cfg - a "-C NAME=VALUE" argument
