@@ -231,6 +231,7 @@ struct AM335xPrussState {
     char ocp_err[PRUSIM_REASON_LEN];
     uint64_t ocp_errors;
     uint64_t ocp_writes;            /* OCP stores landed in RAM */
+    uint64_t ocp_drained;           /* ... of them early, for an ARM access */
 
     /* pin trace */
     struct prusim_trace_rec *trace;
@@ -962,7 +963,7 @@ static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
     uint32_t v = 0;
 
     pruss_lock(p);
-    prusim_ocp_drain(p->s);
+    p->ocp_drained += prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, false)) {
         pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx,
                     size, addr);
@@ -990,7 +991,7 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
 
     trace_am335x_pruss_write(addr, size, v);
     pruss_lock(p);
-    prusim_ocp_drain(p->s);
+    p->ocp_drained += prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, true)) {
         pruss_unimp(p,
                     "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx " (0x%x)",
@@ -1434,9 +1435,10 @@ static uint32_t port_stats(AM335xPrussState *p)
              MAX(p->hold_max_ns, (uint64_t)held), p->hold_expired,
              p->hold_cap_ms, p->hold_mode);
     port_add(p, &len, "ocp_writes %" PRIu64 " ocp_write_delay %u"
-             " ocp_write_flight_us %u ddr_jitter %u\n",
+             " ocp_write_flight_us %u ddr_jitter %u"
+             " ocp_drained %" PRIu64 "\n",
              p->ocp_writes, p->ocp_write_delay, p->ocp_write_flight_us,
-             p->jitter ? p->ddr_jitter : 0);
+             p->jitter ? p->ddr_jitter : 0, p->ocp_drained);
     port_add(p, &len, "ocp_errors %" PRIu64 "%s%s\n", p->ocp_errors,
              p->ocp_errors ? " last " : "", p->ocp_errors ? p->ocp_err : "");
     port_add(p, &len, "jitter %u slices %" PRIu64 " pauses %" PRIu64

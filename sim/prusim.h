@@ -567,7 +567,7 @@ int prusim_write_iram(struct prusim *s, unsigned int core, u32 offset,
 u64 prusim_run(struct prusim *s, u64 max_cycles);
 bool prusim_active(const struct prusim *s);
 void prusim_set_ocp_write_delay(struct prusim *s, u32 cycles);
-void prusim_ocp_drain(struct prusim *s);
+unsigned int prusim_ocp_drain(struct prusim *s);
 void prusim_set_ddr_jitter(struct prusim *s, u16 cycles, u32 seed);
 void prusim_get_status(const struct prusim *s, unsigned int core,
 		       struct prusim_status *st);

@@ -205,10 +205,12 @@ static void posted_land(struct prusim *s)
  * ARM stopping a core and then freeing the memory the core wrote to: on a
  * board a stop takes longer than any store's way there).  They land in
  * order, through &prusim_ops.ocp_write, at &prusim.now.
+ *
+ * Return: how many landed.
  */
-void prusim_ocp_drain(struct prusim *s)
+unsigned int prusim_ocp_drain(struct prusim *s)
 {
-	unsigned int i = 0;
+	unsigned int i = 0, landed = 0;
 
 	while (i < s->queued) {
 		if (s->queue[i].kind != PRUSIM_TIMED_OCP) {
@@ -218,8 +220,10 @@ void prusim_ocp_drain(struct prusim *s)
 		s->queued--;
 		memmove(&s->queue[i], &s->queue[i + 1], (s->queued - i) * sizeof(s->queue[0]));
 		posted_land(s);
+		landed++;
 	}
 	s->next_event = s->queued ? s->queue[0].cycle : PRUSIM_NEVER;
+	return landed;
 }
 
 /**
