@@ -240,6 +240,7 @@ struct AM335xPrussState {
     uint64_t trace_dropped;
     uint64_t trace_origin;
     uint64_t trace_until;
+    bool trace_first;           /* keep the first records, not the last */
 
     /* pads */
     uint32_t pad[PADS_NUM];
@@ -334,6 +335,12 @@ static void trace_pin(AM335xPrussState *p, uint64_t cycle, unsigned int pin,
     struct prusim_trace_rec *r = &p->trace[p->trace_head];
 
     if (p->trace_until && cycle >= p->trace_until) {
+        return;
+    }
+    if (p->trace_first && p->trace_count == TRACE_LEN) {
+        /* full: the trace is whole up to here, and ends here */
+        p->trace_until = cycle;
+        p->trace_dropped++;
         return;
     }
     memset(r, 0, sizeof(*r));
@@ -1547,21 +1554,25 @@ static int port_write_trace(AM335xPrussState *p, uint32_t len, uint32_t *reply)
 {
     char text[64], *arg;
     uint64_t window = 0;
+    bool first;
 
     arg = port_text(p, len, text, sizeof(text));
     if (!arg || strncmp(arg, "clear", 5) ||
         (arg[5] && !g_ascii_isspace(arg[5]))) {
-        *reply = port_reply(p, "trace: write \"clear\" or \"clear CYCLES\"");
+        *reply = port_reply(p, "trace: write \"clear\", \"clear CYCLES\" or "
+                            "\"clear first\"");
         return -EINVAL;
     }
     arg = g_strchug(arg + 5);
-    if (*arg) {
+    first = !strcmp(arg, "first");
+    if (*arg && !first) {
         if (arg[0] == '-' || qemu_strtou64(arg, NULL, 0, &window) ||
             !window) {
             *reply = port_reply(p, "trace: bad window \"%s\"", arg);
             return -EINVAL;
         }
     }
+    p->trace_first = first;
     p->trace_head = 0;
     p->trace_count = 0;
     p->trace_dropped = 0;
@@ -2048,6 +2059,7 @@ static void pruss_reset_state(AM335xPrussState *p)
     }
     p->trace_head = p->trace_count = 0;
     p->trace_dropped = p->trace_origin = p->trace_until = 0;
+    p->trace_first = false;
     p->r30 = p->r30_shown = 0;
     p->in_service = 0;
     p->taken = 0;

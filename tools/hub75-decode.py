@@ -8,6 +8,7 @@ the QEMU PRU-ICSS / prusim (binary trace, sim/prusim_trace.h) or with a list of
 
     hub75-decode.py TRACE --map pocketscroller|bone-r30|JSON|sig=pin,...
                     [--width 64] [--height 32] [--scan 16] [--chain N]
+                    [--row-address binary|direct] [--panel generic|fm6126a]
                     [--window T0:T1 | --pulses N] [--initial sig=level,...]
                     [--lsb CYCLES] [--max-level L] [--png OUT [--scale K]]
                     [--json OUT] [--print]
@@ -38,9 +39,17 @@ c sees the other pins as they were BEFORE cycle c:
     as `clk_while_lat`.
   - latch: a falling edge of lat copies the shift register (as it was before
     the cycle, i.e. without a clk edge of the same cycle) to the outputs.
+    With panel "fm6126a" (--panel), not if clk rose 4 or more times while
+    lat was high: then it is a register write of an FM6126A-class driver
+    chip (the chip counts the
+    clocks: 11 for its register 1, 12 for 2, 10 for an FM6127's 3) and the
+    outputs keep their bits.  Each 16 columns are one chip: its word is
+    their bits, column 16k first as bit 15 (`registers()`).
   - display: the address is a + 2b + 4c + 8d + 16e, of every address line
     the map has (also those beyond log2(S): a wired "e" of a 1/16 scan map
-    going high shows as `bad_address`).  While oe == 0 (active
+    going high shows as `bad_address`); with row address "direct" (outdoor
+    panels' direct row select: S lines a, b, ... for S <= 4) it is the one
+    line that is low (none or several: `bad_address`).  While oe == 0 (active
     low), rows `address` (r1 g1 b1) and `address + S` (r2 g2 b2) show the
     latched bits; the lit time is summed in cycles per pixel and colour,
     over the lit time inside the window [t0, t1).  From cycle c on the state
@@ -201,20 +210,29 @@ class Decoder:
     [(cycle, pin, level)] (relative cycles); query it with the methods."""
 
     def __init__(self, events, pinmap, width, height, scan, chain=1,
-                 initial=None, end=None):
+                 initial=None, end=None, row_address="binary", panel="generic"):
         if scan < 1 or scan > 32 or scan & (scan - 1):
             raise UserError("scan %d: must be a power of two up to 32" % scan)
+        if row_address not in ("binary", "direct") or (row_address == "direct" and scan > 4):
+            raise UserError("row address %s with scan %d: binary, or direct up to 4"
+                            % (row_address, scan))
+        if panel not in ("generic", "fm6126a"):
+            raise UserError("panel %s: generic or fm6126a" % panel)
+        self.direct = row_address == "direct"
+        self.fm6126a = panel == "fm6126a"
         if height != 2 * scan:
             raise UserError("height %d != 2 * scan %d" % (height, scan))
         if width < 1 or chain < 1:
             raise UserError("width and chain must be at least 1")
         self.width, self.height, self.scan, self.chain = width, height, scan, chain
         self.n = width * chain
-        needed = DATA + ADDR[:scan.bit_length() - 1] + ("clk", "lat", "oe")
+        lines = scan if self.direct else scan.bit_length() - 1
+        needed = DATA + ADDR[:lines] + ("clk", "lat", "oe")
         missing = [s for s in needed if s not in pinmap]
         if missing:
             raise UserError("pin map lacks " + " ".join(missing))
-        self.addr_sigs = tuple(s for s in ADDR if s in pinmap)
+        self.addr_sigs = tuple(s for s in ADDR[:lines] if s in pinmap) if self.direct else \
+            tuple(s for s in ADDR if s in pinmap)
         self.pinmap = {s: int(pinmap[s]) for s in SIGNALS if s in pinmap}
         self.bypin = collections.defaultdict(list)
         for s, p in self.pinmap.items():
@@ -241,6 +259,9 @@ class Decoder:
         self._run(evs)
 
     def _address(self, lv):
+        if self.direct:
+            low = [i for i, s in enumerate(self.addr_sigs) if not lv[s]]
+            return low[0] if len(low) == 1 else self.scan
         return sum(lv[s] << ADDR.index(s) for s in self.addr_sigs)
 
     def _run(self, evs):
@@ -251,7 +272,8 @@ class Decoder:
         latched = tuple(shift)
         addr = self._address(lv)
         self.pulses, self.lat_falls, self.clk_rises, self.clk_falls = [], [], [], []
-        self.segments = []
+        self.segments, self.commands = [], []
+        lat_clocks = 0
         self.marks = {k: [] for k in FAULTS}
         lit_since = self.start
         if lv["oe"] == 0:
@@ -280,14 +302,20 @@ class Decoder:
                 elif "oe" in ch:
                     self.marks["oe_coincident"].append(c)
             if lat_fall:			# before this cycle's shift
-                latched = tuple(shift)
+                if self.fm6126a and lat_clocks >= 4:
+                    self.commands.append((c, lat_clocks, tuple(shift)))
+                else:
+                    latched = tuple(shift)
                 self.lat_falls.append(c)
+            elif ch.get("lat") == 1:
+                lat_clocks = 0
             if ch.get("clk") == 1:
                 self.clk_rises.append(c)
                 if not data_set.isdisjoint(ch):
                     self.marks["setup_violations"].append(c)
                 if lv["lat"]:
                     self.marks["clk_while_lat"].append(c)
+                    lat_clocks += 1
                 if lit_across:
                     self.marks["clk_while_lit"].append(c)
                 shift.append(sum(lv[s] << b for b, s in enumerate(DATA)))
@@ -303,6 +331,21 @@ class Decoder:
         if lv["oe"] == 0 and self.end > lit_since:
             self.segments.append((lit_since, self.end, addr, latched))
         self.pulses = [tuple(p) for p in self.pulses]
+
+    def registers(self, t0=None, t1=None):
+        """The register writes in [t0, t1): [(cycle, latch clocks,
+        {line: [word of chip 0, chip 1, ...]})], a chip per 16 columns."""
+        t0, t1 = self._window(t0, t1)
+        out = []
+        for c, clocks, cols in self.commands:
+            if not t0 <= c < t1:
+                continue
+            words = {}
+            for b, line in enumerate(DATA):
+                words[line] = [sum((cols[16 * k + j] >> b & 1) << (15 - j) for j in range(16))
+                               for k in range(self.n // 16)]
+            out.append((c, clocks, words))
+        return out
 
     def _window(self, t0, t1):
         return (self.start if t0 is None else t0, self.end if t1 is None else t1)
@@ -494,6 +537,10 @@ def summary(dec, res, clk, t0, t1):
                      % (len(frames), per, CYCLE_HZ / per, CYCLE_HZ * dec.scan / per / 1e3))
     else:
         lines.append("refresh: %d frame start(s) in the window" % len(frames))
+    for c, clocks, words in dec.registers(t0, t1):
+        lines.append("register write at %d (%d clocks with lat high): %s" % (
+            c, clocks, " ".join("%s %s" % (k, ",".join("%04x" % w for w in sorted(set(v))))
+                                for k, v in words.items())))
     lines.append("faults: " + ", ".join("%s %d" % (k, res[k])
                                          for k in FAULTS + ("bad_address",)))
     if res["pins_without_records"]:
@@ -519,6 +566,8 @@ def main(argv=None):
     ap.add_argument("--height", type=int, default=32)
     ap.add_argument("--scan", type=int, default=16)
     ap.add_argument("--chain", type=int, default=1)
+    ap.add_argument("--row-address", default="binary", choices=("binary", "direct"))
+    ap.add_argument("--panel", default="generic", choices=("generic", "fm6126a"))
     win = ap.add_mutually_exclusive_group()
     win.add_argument("--window")
     win.add_argument("--pulses", type=int)
@@ -548,7 +597,7 @@ def main(argv=None):
             print("hub75-decode.py: warning: %d records dropped, initial levels may be wrong"
                   % dropped, file=sys.stderr)
         dec = Decoder(events, pinmap, args.width, args.height, args.scan, args.chain,
-                      initial, end)
+                      initial, end, args.row_address, args.panel)
         if args.pulses is not None:
             t0, t1 = dec.window_for_pulses(args.pulses)
         else:

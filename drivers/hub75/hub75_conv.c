@@ -89,6 +89,27 @@ size_t hub75_buffer_size(const struct hub75_layout *l)
 	return (size_t)l->planes * l->rows * l->row_bytes;
 }
 
+/* The 8-bit components of pixel (x, y) of @src */
+static void hub75_pixel(const u8 *src, unsigned int pitch, enum hub75_format format,
+			unsigned int x, unsigned int y, u8 *rgb)
+{
+	const u8 *line = src + (size_t)y * pitch;
+
+	if (format == HUB75_RGB565) {
+		u16 p = line[2 * x] | line[2 * x + 1] << 8;
+		unsigned int r5 = p >> 11, g6 = (p >> 5) & 0x3f, b5 = p & 0x1f;
+
+		rgb[0] = r5 << 3 | r5 >> 2;
+		rgb[1] = g6 << 2 | g6 >> 4;
+		rgb[2] = b5 << 3 | b5 >> 2;
+	} else {
+		/* little endian 0xXXRRGGBB: bytes B, G, R, X */
+		rgb[0] = line[4 * x + 2];
+		rgb[1] = line[4 * x + 1];
+		rgb[2] = line[4 * x];
+	}
+}
+
 /* The six 8-bit components of clock x of address row r */
 static void hub75_components(const struct hub75_layout *l, const u8 *src, unsigned int pitch,
 			     enum hub75_format format, unsigned int x, unsigned int r, u8 *v)
@@ -96,23 +117,141 @@ static void hub75_components(const struct hub75_layout *l, const u8 *src, unsign
 	unsigned int half;
 
 	for (half = 0; half < 2; half++) {
-		const u8 *line = src + (size_t)(r + half * l->rows) * pitch;
-		u8 *rgb = v + 3 * half;
+		unsigned int y = r + half * l->rows;
 
-		if (format == HUB75_RGB565) {
-			u16 p = line[2 * x] | line[2 * x + 1] << 8;
-			unsigned int r5 = p >> 11, g6 = (p >> 5) & 0x3f, b5 = p & 0x1f;
+		if (l->mux) {
+			u32 at = l->mux[y * l->clocks + x];
 
-			rgb[0] = r5 << 3 | r5 >> 2;
-			rgb[1] = g6 << 2 | g6 >> 4;
-			rgb[2] = b5 << 3 | b5 >> 2;
+			hub75_pixel(src, pitch, format, at & 0xffff, at >> 16, v + 3 * half);
 		} else {
-			/* little endian 0xXXRRGGBB: bytes B, G, R, X */
-			rgb[0] = line[4 * x + 2];
-			rgb[1] = line[4 * x + 1];
-			rgb[2] = line[4 * x];
+			hub75_pixel(src, pitch, format, x, y, v + 3 * half);
 		}
 	}
+}
+
+const char *const hub75_mux_names[HUB75_MUX_COUNT] = {
+	[HUB75_MUX_DIRECT] = "direct",
+	[HUB75_MUX_STRIPE] = "stripe",
+	[HUB75_MUX_CHECKERED] = "checkered",
+	[HUB75_MUX_SPIRAL] = "spiral",
+	[HUB75_MUX_ZSTRIPE] = "zstripe",
+	[HUB75_MUX_ZN_MIRROR_ZSTRIPE] = "zn-mirror-zstripe",
+	[HUB75_MUX_ZSTRIPE_UNEVEN] = "zstripe-uneven",
+	[HUB75_MUX_INVERSED_ZSTRIPE] = "inversed-zstripe",
+	[HUB75_MUX_P10_1R1G1_1] = "p10-outdoor-1r1g1-1",
+	[HUB75_MUX_P10_1R1G1_2] = "p10-outdoor-1r1g1-2",
+	[HUB75_MUX_P10_1R1G1_3] = "p10-outdoor-1r1g1-3",
+	[HUB75_MUX_FLIPPED_STRIPE] = "flipped-stripe",
+	[HUB75_MUX_P3_64X64] = "p3-outdoor-64x64",
+};
+
+#define HUB75_MUX_UNSET	0xffffffffu
+
+unsigned int hub75_mux_stretch(enum hub75_mux mux)
+{
+	return mux == HUB75_MUX_DIRECT ? 1 : 2;
+}
+
+/*
+ * Where LED (x, y) of a w x h panel is in the panel as driven, 2w x h/2
+ * but for HUB75_MUX_DIRECT.  Stripes: the rows of the top quarter of each
+ * half and those of the quarter below it share an address, one set of
+ * columns each.  Tiles: 8 x 4 blocks, rows of blocks alternately "even"
+ * and "odd", two rows of blocks on one address, one block's 8 columns
+ * after the other's.
+ */
+static void hub75_mux_map(enum hub75_mux mux, unsigned int w, unsigned int h,
+			  unsigned int x, unsigned int y, unsigned int *mx, unsigned int *my)
+{
+	unsigned int h2 = h / 2, h4 = h / 4, q = w / 4, k = x / 8, o = x % 8;
+	bool top = y % h2 < h4, odd = y / 4 % 2;
+
+	*my = y / h2 * h4 + y % h4;
+	switch (mux) {
+	case HUB75_MUX_STRIPE:
+		*mx = top ? x + w : x;
+		return;
+	case HUB75_MUX_FLIPPED_STRIPE:
+		*mx = top ? x : x + w;
+		return;
+	case HUB75_MUX_CHECKERED:
+		if (top)
+			*mx = x < w / 2 ? x + w / 2 : x + w;
+		else
+			*mx = x < w / 2 ? x : x + w / 2;
+		return;
+	case HUB75_MUX_SPIRAL:
+		*mx = 2 * (x / q) * q + (top ? q - 1 - x % q : q + x % q);
+		return;
+	case HUB75_MUX_P3_64X64:
+		*mx = 2 * x + top;
+		return;
+	default:
+		break;
+	}
+	*my = y % 4 + 4 * (y / 8);
+	switch (mux) {
+	case HUB75_MUX_ZSTRIPE:
+		*mx = 16 * k + o + (odd ? 8 : 0);
+		return;
+	case HUB75_MUX_ZN_MIRROR_ZSTRIPE:
+		*mx = odd ? 16 * k + o + 4 : x + 8 * ((x + 4) / 8);
+		return;
+	case HUB75_MUX_ZSTRIPE_UNEVEN:
+		*mx = 16 * k + o + (odd ? 0 : 8);
+		return;
+	case HUB75_MUX_INVERSED_ZSTRIPE:
+		*mx = odd ? 16 * k + o : 16 * k + 15 - o;
+		return;
+	case HUB75_MUX_P10_1R1G1_1:
+		*mx = odd ? 16 * k + 7 - o : 16 * k + 15 - o;
+		return;
+	case HUB75_MUX_P10_1R1G1_2:
+		*mx = odd ? 16 * k + 8 + o : 16 * k + 7 - o;
+		return;
+	case HUB75_MUX_P10_1R1G1_3:
+		*mx = odd ? 16 * k + 15 - o : 16 * k + o;
+		return;
+	default:
+		*mx = x;
+		*my = y;
+	}
+}
+
+/**
+ * hub75_mux_table() - struct hub75_layout's @mux of a chain of panels
+ * @mux: how each panel is wired
+ * @panel_width: a panel's width as seen
+ * @panel_height: its height as seen
+ * @chain: panels in the chain, left to right on the display
+ * @table: room for @panel_width * @chain * @panel_height entries
+ *
+ * Return: false if the wiring does not fit the panel (not every position
+ * of the panel as driven lights exactly one LED).
+ */
+bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int panel_height,
+		     unsigned int chain, u32 *table)
+{
+	unsigned int s = hub75_mux_stretch(mux), clocks = panel_width * chain * s;
+	unsigned int n = panel_width * chain * panel_height, i, x, y, mx, my;
+
+	if (mux >= HUB75_MUX_COUNT || panel_height % (4 * s) || panel_width % 8 ||
+	    panel_width * chain > 0xffff || panel_height > 0xffff)
+		return false;
+	for (i = 0; i < n; i++)
+		table[i] = HUB75_MUX_UNSET;
+	for (y = 0; y < panel_height; y++) {
+		for (x = 0; x < panel_width * chain; x++) {
+			hub75_mux_map(mux, panel_width, panel_height, x % panel_width, y, &mx, &my);
+			if (mx >= panel_width * s || my >= panel_height / s)
+				return false;
+			i = my * clocks + x / panel_width * panel_width * s + mx;
+			if (table[i] != HUB75_MUX_UNSET)
+				return false;
+			table[i] = y << 16 | x;
+		}
+	}
+	return true;
 }
 
 /**
@@ -126,7 +265,8 @@ static void hub75_components(const struct hub75_layout *l, const u8 *src, unsign
  *
  * Each changed pixel shares its blocks' entries with the pixel @rows lines
  * above or below: both are read from @src, so @src must hold the whole
- * current image, not only @rect.
+ * current image, not only @rect.  With @mux every block is converted:
+ * an outdoor panel scatters a rectangle over them.
  *
  * Per entry, each word of @spread of the six components, shifted by their
  * lines' bits, ORed together: lane q of word k is then the entry of plane
@@ -137,7 +277,7 @@ void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		   const struct hub75_rect *rect)
 {
 	unsigned int x1 = rect->x1, x2 = rect->x2 < l->width ? rect->x2 : l->width;
-	unsigned int y2 = rect->y2 < l->height ? rect->y2 : l->height;
+	unsigned int y1 = rect->y1, y2 = rect->y2 < l->height ? rect->y2 : l->height;
 	size_t plane_bytes = (size_t)l->rows * l->row_bytes;
 	unsigned int bits[HUB75_LINES];
 	bool touched[HUB75_MAX_ROWS] = { };
@@ -148,7 +288,13 @@ void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		blocks[p] = buf + l->block_of_plane[p] * plane_bytes;
 	for (c = 0; c < HUB75_LINES; c++)
 		bits[c] = l->line_bit[c];
-	for (y = rect->y1; y < y2; y++)
+	if (l->mux) {
+		x1 = 0;
+		x2 = l->clocks;
+		y1 = 0;
+		y2 = 2 * l->rows;
+	}
+	for (y = y1; y < y2; y++)
 		touched[y % l->rows] = true;
 	for (r = 0; r < l->rows; r++) {
 		if (!touched[r])

@@ -27,6 +27,32 @@ enum hub75_line {
 	HUB75_LINES
 };
 
+/*
+ * How an outdoor panel's driver outputs are wired to its LEDs: the panel,
+ * W x H as seen, is driven as a (W * stretch) x (H / stretch) one (scan
+ * H / (2 * stretch)), whose pixel (mx, my) is the LED at (x, y).  The names
+ * are those of hzeller's rpi-rgb-led-matrix (--led-multiplexing), lower
+ * case with dashes; Documentation/hub75.rst has each rule.
+ */
+enum hub75_mux {
+	HUB75_MUX_DIRECT,
+	HUB75_MUX_STRIPE,
+	HUB75_MUX_CHECKERED,
+	HUB75_MUX_SPIRAL,
+	HUB75_MUX_ZSTRIPE,
+	HUB75_MUX_ZN_MIRROR_ZSTRIPE,
+	HUB75_MUX_ZSTRIPE_UNEVEN,
+	HUB75_MUX_INVERSED_ZSTRIPE,
+	HUB75_MUX_P10_1R1G1_1,
+	HUB75_MUX_P10_1R1G1_2,
+	HUB75_MUX_P10_1R1G1_3,
+	HUB75_MUX_FLIPPED_STRIPE,
+	HUB75_MUX_P3_64X64,
+	HUB75_MUX_COUNT
+};
+
+extern const char *const hub75_mux_names[HUB75_MUX_COUNT];
+
 /* u64 words of struct hub75_layout's @spread: 16-bit lanes, 4 a word */
 #define HUB75_SPREAD_WORDS	((HUB75_MAX_PLANES + 3) / 4)
 
@@ -38,9 +64,13 @@ enum hub75_correction {
 
 /**
  * struct hub75_layout - where each pixel's bits go in a frame buffer
- * @width: pixels in a row of the display (clocks per row), the chain's
- * @height: rows of the display, 2 * @rows
- * @rows: address rows (the panel's scan)
+ * @width: pixels in a row of the display, the chain's
+ * @height: rows of the display
+ * @clocks: clocks per row: @width, times the stretch of @mux
+ * @rows: address rows (the panel's scan): @height / 2 / the stretch
+ * @mux: NULL, or for each position of the panels as driven (row r of the
+ *	top half or r + @rows, clock x: index (r * @clocks + x)), the pixel
+ *	of the display it lights, y << 16 | x (hub75_mux_table())
  * @planes: bit planes, 1..HUB75_MAX_PLANES
  * @entry_bytes: bytes per clock in a block: 1 (HUB75_DATA_R30) or 2
  * @row_bytes: bytes of a block: @width * @entry_bytes rounded up to
@@ -57,7 +87,9 @@ enum hub75_correction {
 struct hub75_layout {
 	unsigned int width;
 	unsigned int height;
+	unsigned int clocks;
 	unsigned int rows;
+	const u32 *mux;
 	unsigned int planes;
 	unsigned int entry_bytes;
 	unsigned int row_bytes;
@@ -79,6 +111,9 @@ struct hub75_rect {
 void hub75_layout_lut(struct hub75_layout *l, enum hub75_correction corr);
 void hub75_layout_finish(struct hub75_layout *l);
 size_t hub75_buffer_size(const struct hub75_layout *l);
+unsigned int hub75_mux_stretch(enum hub75_mux mux);
+bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int panel_height,
+		     unsigned int chain, u32 *table);
 void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		   unsigned int pitch, enum hub75_format format,
 		   const struct hub75_rect *rect);

@@ -170,6 +170,7 @@ static int hub75_start(struct hub75 *h)
 	memcpy_toio(HUB75_CTRL(h, buf_addr), &h->params.buf_addr,
 		    offsetof(struct hub75_ctrl, oe_cycles) -
 		    offsetof(struct hub75_ctrl, buf_addr));
+	memcpy_toio(HUB75_CTRL(h, init), h->params.init, sizeof(h->params.init));
 	hub75_write_oe(h);
 	writel(h->front, HUB75_CTRL(h, show));
 	ret = hub75_command(h, HUB75_CMD_START);
@@ -599,8 +600,14 @@ static int hub75_parse_gpio_data(struct hub75 *h, struct hub75_ctrl *p)
 	return 0;
 }
 
-static int hub75_parse_pins(struct hub75 *h, struct hub75_ctrl *p, unsigned int addr_lines)
+/*
+ * @direct: a line per row, the row's line low, the others high (outdoor
+ * panels' "direct row select"); else the row's number in binary, A its
+ * least significant bit.
+ */
+static int hub75_parse_pins(struct hub75 *h, struct hub75_ctrl *p, bool direct)
 {
+	unsigned int addr_lines = direct ? h->layout.rows : ilog2(h->layout.rows);
 	struct device *dev = h->dev;
 	u32 bits[HUB75_LINES], addr[5], clk, lat, oe;
 	unsigned int i, r;
@@ -631,10 +638,10 @@ static int hub75_parse_pins(struct hub75 *h, struct hub75_ctrl *p, unsigned int 
 	    (p->addr_mask & (BIT(clk) | BIT(lat) | BIT(oe))))
 		return dev_err_probe(dev, -EINVAL,
 				     "clock, latch, OE and address lines need R30 bits of their own\n");
-	for (r = 0; r < (1u << addr_lines); r++) {
+	for (r = 0; r < h->layout.rows; r++) {
 		p->row_addr[r] = 0;
 		for (i = 0; i < addr_lines; i++)
-			if (r & BIT(i))
+			if (direct ? r != i : r & BIT(i))
 				p->row_addr[r] |= BIT(addr[i]);
 	}
 	p->clk_bit = clk;
@@ -668,7 +675,7 @@ static u64 hub75_refresh_cycles(struct hub75 *h, u32 pixel_cycles)
 {
 	const struct hub75_layout *l = &h->layout;
 	u64 block = (u64)l->row_bytes / HUB75_CHUNK_BYTES * HUB75_CHUNK_CYCLES +
-		    (u64)l->width * pixel_cycles + HUB75_BLOCK_CYCLES;
+		    (u64)l->clocks * pixel_cycles + HUB75_BLOCK_CYCLES;
 	u64 lit = 0;
 	unsigned int k;
 
@@ -679,6 +686,58 @@ static u64 hub75_refresh_cycles(struct hub75 *h, u32 pixel_cycles)
 	return l->rows * (l->planes * block + lit);
 }
 
+/* FM6126A-class driver chips: their register words, in the order sent */
+struct hub75_panel_type {
+	const char *name;
+	u32 init[HUB75_MAX_INIT];
+};
+
+static const struct hub75_panel_type hub75_panel_types[] = {
+	{ "generic" },
+	{ "fm6126a", { HUB75_INIT(0x7fff, 11), HUB75_INIT(0x0040, 12) } },
+	{ "fm6127", { HUB75_INIT(0xffce, 11), HUB75_INIT(0xe062, 12), HUB75_INIT(0x5f00, 10) } },
+};
+
+static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain)
+{
+	struct device *dev = h->dev;
+	struct hub75_layout *l = &h->layout;
+	const char *mux = "direct", *type = "generic";
+	unsigned int i;
+	u32 *table;
+	int m;
+
+	device_property_read_string(dev, "prukit,multiplexing", &mux);
+	device_property_read_string(dev, "prukit,panel-type", &type);
+	m = match_string(hub75_mux_names, HUB75_MUX_COUNT, mux);
+	if (m < 0)
+		return dev_err_probe(dev, -EINVAL, "\"prukit,multiplexing\" = \"%s\": unknown\n",
+				     mux);
+	for (i = 0; i < ARRAY_SIZE(hub75_panel_types); i++)
+		if (!strcmp(hub75_panel_types[i].name, type))
+			break;
+	if (i == ARRAY_SIZE(hub75_panel_types))
+		return dev_err_probe(dev, -EINVAL,
+				     "\"prukit,panel-type\" = \"%s\": generic, fm6126a or fm6127\n",
+				     type);
+	memcpy(h->params.init, hub75_panel_types[i].init, sizeof(h->params.init));
+	if (height != 2 * l->rows * hub75_mux_stretch(m))
+		return dev_err_probe(dev, -EINVAL,
+				     "a %u-row panel with scan 1/%u and multiplexing %s: the rows must be %u\n",
+				     height, l->rows, mux, 2 * l->rows * hub75_mux_stretch(m));
+	l->clocks = l->width * hub75_mux_stretch(m);
+	if (m == HUB75_MUX_DIRECT)
+		return 0;
+	table = devm_kcalloc(dev, (size_t)l->width * height, sizeof(*table), GFP_KERNEL);
+	if (!table)
+		return -ENOMEM;
+	if (!hub75_mux_table(m, width, height, chain, table))
+		return dev_err_probe(dev, -EINVAL, "multiplexing %s does not fit a %ux%u panel\n",
+				     mux, width, height);
+	l->mux = table;
+	return 0;
+}
+
 static int hub75_parse(struct hub75 *h)
 {
 	struct device *dev = h->dev;
@@ -686,7 +745,8 @@ static int hub75_parse(struct hub75 *h)
 	struct hub75_ctrl *p = &h->params;
 	u32 width, height, scan, chain = 1, outputs = 1, planes = HUB75_DEFAULT_PLANES;
 	u32 lsb_ns = HUB75_DEFAULT_LSB_NS, clock = HUB75_DEFAULT_CLOCK_HZ, pixel_cycles;
-	const char *corr = "cie1931";
+	const char *corr = "cie1931", *row_address = "binary";
+	bool direct;
 	u64 cycles;
 	int ret;
 
@@ -701,13 +761,18 @@ static int hub75_parse(struct hub75 *h)
 	device_property_read_u32(dev, "prukit,lsb-time-ns", &lsb_ns);
 	device_property_read_u32(dev, "clock-frequency", &clock);
 	device_property_read_string(dev, "prukit,correction", &corr);
+	device_property_read_string(dev, "prukit,row-address", &row_address);
 
-	if (scan != 8 && scan != 16 && scan != 32)
-		return dev_err_probe(dev, -EINVAL, "scan 1/%u: 1/8, 1/16 or 1/32\n", scan);
-	if (height != 2 * scan)
+	if (scan != 4 && scan != 8 && scan != 16 && scan != 32)
+		return dev_err_probe(dev, -EINVAL, "scan 1/%u: 1/4, 1/8, 1/16 or 1/32\n", scan);
+	if (!strcmp(row_address, "direct") && scan <= 4)
+		direct = true;
+	else if (!strcmp(row_address, "binary"))
+		direct = false;
+	else
 		return dev_err_probe(dev, -EINVAL,
-				     "a %u-row panel with scan 1/%u: the rows must be twice the scan\n",
-				     height, scan);
+				     "\"prukit,row-address\" = \"%s\" with scan 1/%u: \"binary\", or \"direct\" up to 1/4\n",
+				     row_address, scan);
 	if (!width || width > 256 || width % 16)
 		return dev_err_probe(dev, -EINVAL, "panel width %u: 16..256, a multiple of 16\n",
 				     width);
@@ -724,6 +789,9 @@ static int hub75_parse(struct hub75 *h)
 	l->height = height;
 	l->rows = scan;
 	l->planes = planes;
+	ret = hub75_parse_panel(h, width, height, chain);
+	if (ret)
+		return ret;
 	if (!strcmp(corr, "cie1931"))
 		hub75_layout_lut(l, HUB75_CIE1931);
 	else if (!strcmp(corr, "linear"))
@@ -733,14 +801,14 @@ static int hub75_parse(struct hub75 *h)
 				     "\"prukit,correction\" = \"%s\": \"cie1931\" or \"linear\"\n",
 				     corr);
 	/* fills @entry_bytes */
-	ret = hub75_parse_pins(h, p, ilog2(scan));
+	ret = hub75_parse_pins(h, p, direct);
 	if (ret)
 		return ret;
-	l->row_bytes = l->width * l->entry_bytes;
+	l->row_bytes = l->clocks * l->entry_bytes;
 	if (l->row_bytes % HUB75_CHUNK_BYTES || l->row_bytes > HUB75_MAX_ROW_BYTES)
 		return dev_err_probe(dev, -EINVAL,
-				     "%u pixels a row: the PRU takes them %u at a time, %u at most\n",
-				     l->width, HUB75_CHUNK_BYTES / l->entry_bytes,
+				     "%u clocks a row: the PRU takes them %u at a time, %u at most\n",
+				     l->clocks, HUB75_CHUNK_BYTES / l->entry_bytes,
 				     HUB75_MAX_ROW_BYTES / l->entry_bytes);
 	hub75_layout_finish(l);
 

@@ -31,6 +31,12 @@
  *  START: checks and takes the parameters, answers, and refreshes until
  *	the next command.  @show, @oe_cycles may change while it runs (@oe_cycles
  *	is read per plane: brightness).
+ *	Before its first refresh START clocks in the panel's control register
+ *	words (@init, FM6126A-class driver chips), each on every data line:
+ *	a row of @row_bytes / entry clocks, bit 15 - (clock % 16) of the word
+ *	on the data lines, the latch high for the last @init's LATCH clocks
+ *	(the register number), the address lines at @row_addr[1 % @rows], OE
+ *	high (dark) throughout.
  *  STOP: ends the refresh, sets OE (@oe_bit) high: the panel goes dark.
  *	The driver sends it once right after loading the firmware too: R30 is
  *	0 when a core starts, so OE is low (lit) until then.
@@ -45,13 +51,21 @@
 #endif
 
 #define HUB75_MAGIC		0x35374248u	/* "HB75" */
-#define HUB75_VERSION		1
+#define HUB75_VERSION		2
 
-#define HUB75_MAX_PLANES	11
+#define HUB75_MAX_PLANES	12
 #define HUB75_MAX_ROWS		32
 #define HUB75_CHUNK_BYTES	32	/* @row_bytes is a multiple of this */
 #define HUB75_MAX_ROW_BYTES	4096
 #define HUB75_MAX_CLK_DELAY	255
+#define HUB75_MAX_INIT		4
+
+/* @init[]: a register word and the clocks the latch is high for it */
+#define HUB75_INIT(word, latch)	((__u32)(word) | (__u32)(latch) << 16)
+#define HUB75_INIT_WORD(v)	((v) & 0xffffu)
+#define HUB75_INIT_LATCH(v)	((v) >> 16 & 0xffu)
+#define HUB75_INIT_MIN_LATCH	4	/* fewer clocks are a data latch */
+#define HUB75_INIT_MAX_LATCH	16
 
 /* @data_mode */
 #define HUB75_DATA_R30		0	/* data pins and clock in R30 bits 0..7 */
@@ -98,6 +112,8 @@
  * @shown: PRU: the buffer the current refresh shows
  * @refreshes: PRU: refreshes begun since START
  * @refresh_cycles: PRU: cycles the previous refresh took (0 before one did)
+ * @init: START: the register words to clock in before the first refresh,
+ *	HUB75_INIT(word, latch clocks), in order; the first 0 ends the list
  */
 struct hub75_ctrl {
 	struct prukit_ctrl_hdr hdr;
@@ -116,11 +132,12 @@ struct hub75_ctrl {
 	__u8 clk_delay;
 	__u8 reserved;
 	__u32 row_addr[HUB75_MAX_ROWS];
-	__u32 oe_cycles[HUB75_MAX_PLANES + 1];
+	__u32 oe_cycles[HUB75_MAX_PLANES];
 	__u32 show;
 	__u32 shown;
 	__u32 refreshes;
 	__u32 refresh_cycles;
+	__u32 init[HUB75_MAX_INIT];
 } __packed __aligned(4);
 #endif
 
@@ -131,10 +148,11 @@ struct hub75_ctrl {
 #define HUB75_CTRL_DATA_MODE	40
 #define HUB75_CTRL_ROW_ADDR	48
 #define HUB75_CTRL_OE_CYCLES	(HUB75_CTRL_ROW_ADDR + 4 * HUB75_MAX_ROWS)	/* 176 */
-#define HUB75_CTRL_SHOW		(HUB75_CTRL_OE_CYCLES + 4 * (HUB75_MAX_PLANES + 1))	/* 224 */
+#define HUB75_CTRL_SHOW		(HUB75_CTRL_OE_CYCLES + 4 * HUB75_MAX_PLANES)	/* 224 */
 #define HUB75_CTRL_SHOWN	(HUB75_CTRL_SHOW + 4)
 #define HUB75_CTRL_REFRESHES	(HUB75_CTRL_SHOW + 8)
 #define HUB75_CTRL_REFRESH_CYCLES (HUB75_CTRL_SHOW + 12)
-#define HUB75_CTRL_SIZE		(HUB75_CTRL_SHOW + 16)
+#define HUB75_CTRL_INIT		(HUB75_CTRL_SHOW + 16)
+#define HUB75_CTRL_SIZE		(HUB75_CTRL_INIT + 4 * HUB75_MAX_INIT)
 
 #endif /* _HUB75_PROTO_H */

@@ -2,9 +2,10 @@
 /*
  * hub75: PRU firmware of the hub75 (RGB LED matrix) driver.
  *
- * The command loop: START checks the parameters (hub75_proto.h) and runs
- * the refresh loop of hub75_scan.S until the next command; STOP leaves the
- * panel dark.  The loop polls the control block with loads only.
+ * The command loop: START checks the parameters (hub75_proto.h), clocks in
+ * the panel's register words if it has any, and runs the refresh loop of
+ * hub75_scan.S until the next command; STOP leaves the panel dark.  The
+ * loop polls the control block with loads only.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -30,6 +31,7 @@ CTRL_AT(oe_cycles, HUB75_CTRL_OE_CYCLES);
 CTRL_AT(show, HUB75_CTRL_SHOW);
 CTRL_AT(refreshes, HUB75_CTRL_REFRESHES);
 CTRL_AT(refresh_cycles, HUB75_CTRL_REFRESH_CYCLES);
+CTRL_AT(init, HUB75_CTRL_INIT);
 static_assert(sizeof(struct hub75_ctrl) == HUB75_CTRL_SIZE, "hub75_scan.S: ctrl layout");
 
 /* The image initialises the header: the driver checks it right after loading. */
@@ -58,6 +60,26 @@ static int gpio_bank_ok(uint32_t base)
 	return 0;
 }
 
+/* Clocks in a row, as the refresh does: HUB75_DATA_GPIO has 2 bytes a clock */
+static uint32_t row_clocks(volatile struct hub75_ctrl *c)
+{
+	return c->data_mode == HUB75_DATA_GPIO ? c->row_bytes / 2u : c->row_bytes;
+}
+
+static uint32_t check_init(volatile struct hub75_ctrl *c)
+{
+	unsigned int i;
+
+	for (i = 0; i < HUB75_MAX_INIT && c->init[i]; i++) {
+		uint32_t latch = HUB75_INIT_LATCH(c->init[i]);
+
+		if (c->init[i] >> 24 || latch < HUB75_INIT_MIN_LATCH ||
+		    latch > HUB75_INIT_MAX_LATCH || latch > row_clocks(c))
+			return HUB75_EINVAL;
+	}
+	return HUB75_OK;
+}
+
 static uint32_t check_start(volatile struct hub75_ctrl *c)
 {
 	uint32_t pins = (1u << c->lat_bit) | (1u << c->oe_bit) | (1u << c->clk_bit);
@@ -67,7 +89,7 @@ static uint32_t check_start(volatile struct hub75_ctrl *c)
 	    !c->row_bytes || c->row_bytes % HUB75_CHUNK_BYTES ||
 	    c->row_bytes > HUB75_MAX_ROW_BYTES ||
 	    c->clk_bit > 31 || c->lat_bit > 31 || c->oe_bit > 31 ||
-	    (c->addr_mask & pins))
+	    (c->addr_mask & pins) || check_init(c) != HUB75_OK)
 		return HUB75_EINVAL;
 	switch (c->data_mode) {
 	case HUB75_DATA_R30:
@@ -82,6 +104,62 @@ static uint32_t check_start(volatile struct hub75_ctrl *c)
 		return HUB75_OK;
 	}
 	return HUB75_EINVAL;
+}
+
+/*
+ * The data lines at @one: R30's low byte but the clock and the latch, or
+ * the bank's data pins.  A GPIO write lands 17 cycles after the bank took
+ * it, and the bank takes one every 8: the wait puts both well before the
+ * clock's rising edge.
+ */
+static void init_data(volatile struct hub75_ctrl *c, uint32_t r30, int one)
+{
+	uint32_t lines = 0xffu & ~(1u << c->clk_bit | 1u << c->lat_bit);
+
+	if (c->data_mode == HUB75_DATA_GPIO) {
+		volatile uint32_t *bank = (volatile uint32_t *)c->gpio_base;
+
+		bank[(one ? HUB75_GPIO_SETDATAOUT : HUB75_GPIO_CLEARDATAOUT) / 4] = c->gpio_mask;
+		write_r30(r30);
+		__delay_cycles(40);
+		return;
+	}
+	write_r30((r30 & ~lines) | (one ? lines : 0));
+	__delay_cycles(4);
+}
+
+/*
+ * The register words of @init (hub75_proto.h): per word a row of clocks,
+ * bit 15 - (clock % 16) on every data line (so each 16-clock driver chip
+ * of the chain takes the word), the latch high for the last LATCH clocks,
+ * which is how an FM6126A-class chip tells a register write from a data
+ * latch.  Dark throughout; the clock and the latch end low.
+ */
+static void send_init(volatile struct hub75_ctrl *c)
+{
+	uint32_t clk = 1u << c->clk_bit, lat = 1u << c->lat_bit;
+	uint32_t n = row_clocks(c), r30, i;
+	unsigned int k;
+
+	r30 = (read_r30() | 1u << c->oe_bit) & ~(clk | lat);
+	r30 = (r30 & ~c->addr_mask) | (c->row_addr[1 % c->rows] & c->addr_mask);
+	write_r30(r30);
+	for (k = 0; k < HUB75_MAX_INIT && c->init[k]; k++) {
+		uint32_t word = HUB75_INIT_WORD(c->init[k]);
+		uint32_t from = n - HUB75_INIT_LATCH(c->init[k]);
+
+		for (i = 0; i < n; i++) {
+			if (i == from)
+				r30 |= lat;
+			init_data(c, r30, word >> (15 - i % 16) & 1);
+			write_r30(read_r30() | clk);
+			__delay_cycles(4);
+			write_r30(read_r30() & ~clk);
+		}
+		r30 &= ~lat;
+		write_r30(read_r30() & ~lat);
+		__delay_cycles(4);
+	}
 }
 
 int main(void)
@@ -112,6 +190,7 @@ int main(void)
 			c->refreshes = 0;
 			c->refresh_cycles = 0;
 			answer(c, seq, HUB75_OK);
+			send_init(c);
 			/* returns on the next command, which this loop then takes */
 			hub75_scan(c, cmd);
 			break;

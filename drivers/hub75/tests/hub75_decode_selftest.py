@@ -269,6 +269,64 @@ def test_initial(tmp):
           "pins without records reported and set from initial")
 
 
+def test_fm6126a():
+    """Register words clocked in with lat high: an FM6126A-class panel
+    takes them as register writes, a generic one as a data latch."""
+    n, t, ev = 32, 10, []
+    lv = {}
+
+    def put(sig, v):
+        nonlocal t
+        if lv.get(sig) != v:
+            ev.append((t, BONE[sig], v))
+            lv[sig] = v
+
+    for sig in DATA + ("clk", "lat", "a", "b", "c", "d"):
+        put(sig, 0)
+    put("oe", 1)
+    for word, latch in ((0x7FFF, 11), (0x0040, 12), (0x1234, 3)):
+        for i in range(n):
+            t += 5
+            put("lat", 1 if i >= n - latch else 0)
+            for sig in DATA:
+                put(sig, word >> (15 - i % 16) & 1)
+            t += 5
+            put("clk", 1)
+            t += 5
+            put("clk", 0)
+        t += 5
+        put("lat", 0)
+    dec = hd.Decoder(ev, BONE, n, 8, 4, panel="fm6126a")
+    regs = dec.registers()
+    check([(c, w["r1"], w["b2"]) for _, c, w in regs] ==
+          [(11, [0x7FFF] * 2, [0x7FFF] * 2), (12, [0x0040] * 2, [0x0040] * 2)],
+          "fm6126a: registers %s" % [(c, [hex(x) for x in w["r1"]]) for _, c, w in regs])
+    check(len(dec.latches()) == 3, "fm6126a: 3 lat falls, %d" % len(dec.latches()))
+    check(hd.Decoder(ev, BONE, n, 8, 4).registers() == [],
+          "generic panel: lat high for 11 clocks is no register write")
+    print("PASS: decoder: fm6126a register writes 0x7fff (11 clocks), 0x0040 (12), a data latch (3)")
+
+
+def test_direct_rows():
+    """Direct row select: the row's line low, the others high."""
+    ev, t = [], 0
+    for sig in ("a", "b", "c", "d"):
+        ev.append((t, BONE[sig], 1))
+    for row, lines in ((0, "bcd"), (1, "acd"), (2, "abd"), (3, "abc"), (9, "abcd")):
+        t += 10
+        for k, sig in enumerate("abcd"):
+            ev.append((t, BONE[sig], 1 if sig in lines else 0))
+        t += 1
+        ev.append((t, BONE["oe"], 0))
+        t += 10
+        ev.append((t, BONE["oe"], 1))
+    dec = hd.Decoder(ev, BONE, 16, 8, 4, initial={"oe": 1}, row_address="direct")
+    got = [a for _, _, a in dec.oe_pulses()]
+    check(got == [0, 1, 2, 3, 4], "direct row select: rows %s" % got)
+    check(dec.integrate()["bad_address"] == 1, "direct row select: no line low is a bad address")
+    print("PASS: decoder: direct row select (one line low per row, none low: bad address)")
+
+
 def run_tool(*args):
     flags = ["-W" + w for w in sys.warnoptions]
     return subprocess.run([sys.executable] + flags + [TOOL] + list(args),
@@ -350,6 +408,8 @@ def main():
             test_faults("bone-r30-chain", BONE, 16, 8, 4, 2)
             test_faults("pocketscroller-64x32", POCKET, 64, 32, 16, 1)
             test_initial(tmp)
+            test_fm6126a()
+            test_direct_rows()
             test_cli(path, imgs, tmp)
     except Failure as e:
         print("FAIL: decoder: %s" % e)

@@ -72,3 +72,101 @@ def frame_buffer(line_bits, entry_bytes, img, rows, planes):
                     e |= ((lv[c] >> p) & 1) << line_bits[c]
                 out += struct.pack("<H" if entry_bytes == 2 else "<B", e)
     return bytes(out)
+
+
+# Outdoor panels (hub75.rst, "Outdoor panels"): the LED at (x, y) of a
+# w x h panel is pixel (mx, my) of the panel as driven, 2w x h/2.  Written
+# from the rules of hzeller's rpi-rgb-led-matrix's documentation of its
+# --led-multiplexing mappers, in their own form (not hub75_conv.c's).
+def _stripe_y(y, h):
+    return (y // (h // 2)) * (h // 4) + y % (h // 4)
+
+
+def _is_top(y, h):
+    return (y % (h // 2)) < h // 4
+
+
+def _zstripe(x, y, even_off, odd_off):
+    odd = (y // 4) % 2
+    mx = x + ((x + (0 if odd else even_off)) // 8) * 8 + (odd_off if odd else 0)
+    return mx, (y % 4) + 4 * (y // 8)
+
+
+def mux_map(name, w, h, x, y):
+    """(mx, my) of LED (x, y) of a w x h panel wired as NAME."""
+    top = _is_top(y, h)
+    sy = _stripe_y(y, h)
+    odd = (y // 4) % 2
+    even = 1 - odd
+    ty = (y % 4) + 4 * (y // 8)
+    if name == "direct":
+        return x, y
+    if name == "stripe":
+        return (x + w if top else x), sy
+    if name == "flipped-stripe":
+        return (x if top else x + w), sy
+    if name == "checkered":
+        if top:
+            return (x + w // 2 if x < w // 2 else x + w), sy
+        return (x if x < w // 2 else x + w // 2), sy
+    if name == "spiral":
+        q = w // 4
+        quarter, off = x // q, x % q
+        return 2 * quarter * q + (q - 1 - off if top else q + off), sy
+    if name == "p3-outdoor-64x64":
+        return 2 * x + (1 if top else 0), sy
+    if name == "zstripe":
+        return _zstripe(x, y, 0, 8)
+    if name == "zn-mirror-zstripe":
+        return _zstripe(x, y, 4, 4)
+    if name == "zstripe-uneven":
+        return _zstripe(x, y, 8, 0)
+    if name == "inversed-zstripe":
+        if odd:
+            return x + (x // 8) * 8, ty
+        return (x // 8) * 16 + 8 + (7 - x % 8), ty
+    if name == "p10-outdoor-1r1g1-1":
+        return 8 * (1 + even + 2 * (x // 8)) - (x % 8) - 1, ty
+    if name == "p10-outdoor-1r1g1-2":
+        if even:
+            return 8 * (1 + 2 * (x // 8)) - (x % 8) - 1, ty
+        return x + (x // 8) * 8 + 8, ty
+    if name == "p10-outdoor-1r1g1-3":
+        if odd:
+            return 8 * (2 + 2 * (x // 8)) - (x % 8) - 1, ty
+        return x + (x // 8) * 8, ty
+    raise ValueError("unknown multiplexing %r" % name)
+
+
+MUXES = ("stripe", "checkered", "spiral", "zstripe", "zn-mirror-zstripe", "zstripe-uneven",
+         "inversed-zstripe", "p10-outdoor-1r1g1-1", "p10-outdoor-1r1g1-2",
+         "p10-outdoor-1r1g1-3", "flipped-stripe", "p3-outdoor-64x64")
+
+
+def driven(img, name, panel_w):
+    """The picture as driven: IMG (rows of a chain of panel_w-wide panels)
+    rearranged into the chain of panels as their outputs are wired."""
+    h, width = len(img), len(img[0])
+    s = 1 if name == "direct" else 2
+    out = [[None] * (width * s) for _ in range(h // s)]
+    for y in range(h):
+        for vx in range(width):
+            c, x = divmod(vx, panel_w)
+            mx, my = mux_map(name, panel_w, h, x, y)
+            out[my][c * panel_w * s + mx] = img[y][vx]
+    return out
+
+
+def seen(decoded, name, panel_w, width, h):
+    """The picture a viewer sees (width x h) from DECODED, the levels of
+    the panels as driven (hub75-decode.py's chain image)."""
+    s = 1 if name == "direct" else 2
+    out = []
+    for y in range(h):
+        row = []
+        for vx in range(width):
+            c, x = divmod(vx, panel_w)
+            mx, my = mux_map(name, panel_w, h, x, y)
+            row.append(tuple(decoded[my][c * panel_w * s + mx]))
+        out.append(row)
+    return out

@@ -7,7 +7,7 @@ should show (hub75_model.py)."""
 import importlib.util
 import os
 
-from hub75_model import expected, plane_order
+from hub75_model import expected, plane_order, seen
 
 TOP = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../.."))
 spec = importlib.util.spec_from_file_location("hub75_decode", TOP + "/tools/hub75-decode.py")
@@ -15,13 +15,44 @@ hd = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(hd)
 
 
+def stretch(m):
+    """How much wider and less high the panels are driven than seen."""
+    return 1 if m.get("mux", "direct") == "direct" else 2
+
+
 def decoder(art, m):
-    _, dropped, events = hd.read_trace(os.path.join(art, m["name"] + ".trace"))
+    """(dropped records, the decoder of the panels as driven)"""
+    _, dropped, events, end = hd.read_trace(os.path.join(art, m["name"] + ".trace"),
+                                            with_end=True)
     pinmap = dict(hd.MAPS[m["map"]])
     if m["scan"] < 32:
         pinmap.pop("e", None)
-    return dropped, hd.Decoder(events, pinmap, m["width"], m["height"], m["scan"],
-                               initial={"oe": 1})
+    return dropped, hd.Decoder(events, pinmap, m["width"] * stretch(m), 2 * m["scan"], m["scan"],
+                               initial={"oe": 1}, end=end,
+                               panel="fm6126a" if m.get("panel") == "fm6126a" else "generic")
+
+
+# the register words of each panel type, in order: (latch clocks, word)
+PANEL_WORDS = {"fm6126a": [(11, 0x7FFF), (12, 0x0040)]}
+
+
+def check_start(art, m, check):
+    """A trace from the display's enable on ("clear first"): the panel's
+    register words on every data line of every chip, before any row is
+    lit, and then rows lit."""
+    name = m["name"]
+    _, dec = decoder(art, m)
+    regs = dec.registers()
+    chips = m["width"] * stretch(m) // 16
+    want = [(n, {line: [w] * chips for line in hd.DATA}) for n, w in PANEL_WORDS[m["panel"]]]
+    got = [(n, w) for _, n, w in regs]
+    check("%s: the %s register words on every data line of all %d chips" % (
+        name, m["panel"], chips), got == want,
+        [(n, {k: sorted("%04x" % x for x in set(v)) for k, v in w.items()}) for n, w in got])
+    pulses = dec.oe_pulses()
+    check("%s: no row lit before the last register word, rows lit after it" % name,
+          regs and pulses and pulses[0][0] > regs[-1][0],
+          "words at %s, first lit %s" % ([c for c, _, _ in regs], pulses[:1]))
 
 
 def check_picture(art, m, check):
@@ -72,13 +103,16 @@ def check_picture(art, m, check):
     check("%s: pixel clock %.1f MHz" % (name, 200 / want_clk), clk["min_period"] == want_clk,
           clk["min_period"])
     levels, dev = hd.to_levels(res["on"], lsb)
+    levels = seen(levels, m.get("mux", "direct"), m["width"] // m.get("chain", 1), m["width"],
+                  m["height"])
     with open(os.path.join(art, m["image"]), "rb") as f:
         data = f.read()
     want = expected(data, m["format"], m["width"], m["height"], planes, m["correction"])
     bad = [(x, y) for y in range(m["height"]) for x in range(m["width"])
            if tuple(levels[y][x]) != want[y][x]]
-    check("%s: every pixel shows the picture's levels exactly (%dx%d, %d planes, %s)"
-          % (name, m["width"], m["height"], planes, m["correction"]), not bad and dev == 0,
+    check("%s: every pixel shows the picture's levels exactly (%dx%d, %d planes, %s%s)"
+          % (name, m["width"], m["height"], planes, m["correction"],
+             ", wired %s" % m["mux"] if stretch(m) > 1 else ""), not bad and dev == 0,
           "%d pixels differ, first %s: got %s, want %s" % (
               len(bad), bad[:1], bad and levels[bad[0][1]][bad[0][0]],
               bad and want[bad[0][1]][bad[0][0]]) if bad else "deviation %s" % dev)

@@ -33,8 +33,9 @@ import hub75_model  # noqa: E402
 from hub75_model import plane_order  # noqa: E402
 
 MAGIC = 0x35374248
-VERSION = 1
-CTRL_SIZE = 240
+VERSION = 2
+CTRL_SIZE = 256
+MAX_PLANES = 12
 START, STOP = 1, 2
 DDR = 0x80000000
 GPIO1 = 0x4804c000
@@ -74,36 +75,49 @@ def frame_buffer(pm, img, rows, planes):
                                     img, rows, planes)
 
 
-def ctrl(pm, rows, planes, row_bytes, oe, show, clk_delay, bufs, addr_lines):
+def ctrl(pm, rows, planes, row_bytes, oe, show, clk_delay, bufs, addr_lines, init=(),
+         direct=False):
     addr = pm["addr"][:addr_lines]
-    row_addr = [sum(1 << addr[i] for i in range(addr_lines) if r >> i & 1) for r in range(32)]
+    if direct:		# a line per row, low for its row
+        row_addr = [sum(1 << addr[i] for i in range(addr_lines) if i != r) for r in range(32)]
+    else:
+        row_addr = [sum(1 << addr[i] for i in range(addr_lines) if r >> i & 1) for r in range(32)]
     gpio_mask = sum(1 << b for b in pm["data"]) if pm["mode"] else 0
     hdr = struct.pack("<IHHII", MAGIC, VERSION, CTRL_SIZE, START | 1 << 16, 0)
     body = struct.pack("<2I3IHH8B", bufs[0], bufs[1], GPIO1 if pm["mode"] else 0, gpio_mask,
                        sum(1 << a for a in addr), row_bytes, rows, pm["mode"], planes, pm["clk"],
                        pm["lat"], pm["oe"], min(pm["data"]) if pm["mode"] else 0, clk_delay, 0)
-    oe = list(oe) + [0] * (12 - len(oe))
+    oe = list(oe) + [0] * (MAX_PLANES - len(oe))
+    init = [w | n << 16 for w, n in init] + [0] * (4 - len(init))
     return hdr + body + struct.pack("<32I", *row_addr) + struct.pack("<12I", *oe) + \
-        struct.pack("<4I", show, 0, 0, 0)
+        struct.pack("<4I", show, 0, 0, 0) + struct.pack("<4I", *init)
 
 
 def run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay=3, show=0,
-        refreshes=2.3, cycles=None, raw_ctrl=None):
-    """Run the firmware; return (ctrl fields, decoder, images) or None."""
+        refreshes=2.3, cycles=None, raw_ctrl=None, panel=None):
+    """Run the firmware; return (ctrl fields, decoder, images) or None.
+    PANEL: dict(mux=NAME, panel_w=W, init=[(word, latch clocks)],
+    direct=bool): WIDTH x HEIGHT is then the picture as seen, the panels
+    driven as their wiring NAME says."""
+    panel = dict(dict(mux="direct", panel_w=width, init=(), direct=False), **(panel or {}))
+    stretch = 1 if panel["mux"] == "direct" else 2
     rows = scan
     bpe = 2 if pm["mode"] else 1
-    row_bytes = width * bpe
+    row_bytes = width * stretch * bpe
     imgs = [image(width, height, planes, 1), image(width, height, planes, 2)]
-    fbs = [frame_buffer(pm, imgs[i], rows, planes) for i in range(2)]
+    driven = [hub75_model.driven(img, panel["mux"], panel["panel_w"]) for img in imgs]
+    fbs = [frame_buffer(pm, driven[i], rows, planes) for i in range(2)]
     size = len(fbs[0])
     order = plane_order(planes)
     oe = [lsb << p for p in order]
     if cycles is None:
         pix = 16 if pm["mode"] else 4 + 2 * clk_delay
-        est = rows * (planes * (row_bytes // 32 * 53 + width * pix + 40) + sum(oe))
-        cycles = int(est * refreshes) + 2000
+        est = rows * (planes * (row_bytes // 32 * 53 + width * stretch * pix + 40) + sum(oe))
+        # the register words: about 70 cycles a clock from C
+        cycles = int(est * refreshes) + 2000 + len(panel["init"]) * width * stretch * 120
     blob = raw_ctrl or ctrl(pm, rows, planes, row_bytes, oe, show, clk_delay,
-                            [DDR, DDR + size], scan.bit_length() - 1)
+                            [DDR, DDR + size], scan if panel["direct"] else scan.bit_length() - 1,
+                            panel["init"], panel["direct"])
     core = "pru%d" % pm["core"]
     with open(work + "/ctrl.bin", "wb") as f:
         f.write(blob)
@@ -126,7 +140,9 @@ def run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay=3, sho
     pinmap = dict(pins["pocketscroller" if pm is POCKET else "bone-r30"])
     if scan < 32:
         pinmap.pop("e", None)
-    dec = hd.Decoder(events, pinmap, width, height, scan, initial={})
+    dec = hd.Decoder(events, pinmap, width * stretch, 2 * scan, scan, initial={},
+                     row_address="direct" if panel["direct"] else "binary",
+                     panel="fm6126a" if panel["init"] else "generic")
     return dict(status=status, shown=shown, refreshes=nref, refresh_cycles=rcyc), dec, imgs, oe
 
 
@@ -142,8 +158,10 @@ def decode_refresh(dec, rows, planes, k):
     return t0, t1, pulses[k * n:(k + 1) * n], dec.integrate(t0, t1)
 
 
-def case(prusim, fw, work, name, pm, width, height, scan, planes, lsb, clk_delay=3, show=0):
-    res = run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay, show)
+def case(prusim, fw, work, name, pm, width, height, scan, planes, lsb, clk_delay=3, show=0,
+         panel=None):
+    res = run(prusim, fw, work, pm, width, height, scan, planes, lsb, clk_delay, show,
+              panel=panel)
     if not check("%s: prusim ran" % name, res is not None):
         return None
     c, dec, imgs, oe = res
@@ -155,6 +173,9 @@ def case(prusim, fw, work, name, pm, width, height, scan, planes, lsb, clk_delay
         return None
     t0, t1, pulses, integ = got
     levels, dev = hd.to_levels(integ["on"], lsb)
+    if panel:
+        levels = hub75_model.seen(levels, panel.get("mux", "direct"),
+                                  panel.get("panel_w", width), width, height)
     want = imgs[show]
     bad = [(x, y) for y in range(height) for x in range(width)
            if tuple(levels[y][x]) != tuple(want[y][x])]
@@ -173,6 +194,17 @@ def case(prusim, fw, work, name, pm, width, height, scan, planes, lsb, clk_delay
                                     "oe_coincident", "bad_address")}
     check("%s: no change while lit, no data change on a clock edge" % name,
           not any(faults.values()), str(faults))
+    if panel and panel.get("init"):
+        regs = dec.registers()
+        # OE is low from the core's start until the firmware first sets it
+        lit = [p for p in dec.oe_pulses() if p[0] > 0]
+        want_regs = [(n, {line: [w] * (width * 2 // 16 if panel.get("mux", "direct") != "direct"
+                                       else width // 16) for line in hd.DATA})
+                     for w, n in panel["init"]]
+        check("%s: the register words on every line of every chip, before a row is lit" % name,
+              [(n, w) for _, n, w in regs] == want_regs and lit and regs[-1][0] < lit[0][0],
+              "%s; first lit at %s" % ([(n, {k: ["%04x" % x for x in set(v)] for k, v in w.items()})
+                                        for _, n, w in regs], lit[:1]))
     check("%s: refresh length in the trace = @refresh_cycles" % name,
           c["refreshes"] >= 2 and t1 - t0 == c["refresh_cycles"],
           "trace %d, firmware %d, %d refreshes" % (t1 - t0, c["refresh_cycles"], c["refreshes"]))
@@ -185,7 +217,10 @@ def bad_start(prusim, fw, work):
     good = dict(rows=16, planes=8, row_bytes=64, oe=[26] * 8, show=0, clk_delay=3,
                 bufs=[DDR, DDR + 8192], addr_lines=4)
     for what, change in (("row bytes not a multiple of 32", dict(row_bytes=40)),
-                         ("12 planes", dict(planes=12)),
+                         ("13 planes", dict(planes=13)),
+                         ("a register word latched with 3 clocks (a data latch)",
+                          dict(init=[(0x7FFF, 11), (0x0040, 3)])),
+                         ("a register word latched with 17 clocks", dict(init=[(0x7FFF, 17)])),
                          ("clock delay 0", dict(clk_delay=0))):
         args = dict(good, **change)
         blob = ctrl(pm, **args)
@@ -215,6 +250,18 @@ def main():
                       64, 32, 16, 8, 26, clk_delay=1)
     r["pocket"] = case(prusim, fw, work, "pocketscroller 64x32 8 planes", POCKET, 64, 32, 16, 8, 26)
     r["pocket-dim"] = case(prusim, fw, work, "pocketscroller 64x32, lsb 3 (dim)", POCKET, 64, 32, 16, 8, 3)
+    r["fm6126a"] = case(prusim, fw, work, "FM6126A chain of 2 (128x32), register words at START",
+                        BONE, 128, 32, 16, 8, 26,
+                        panel=dict(init=[(0x7FFF, 11), (0x0040, 12)]))
+    r["fm6127"] = case(prusim, fw, work, "FM6127 64x32, data on GPIO bank 1, three register words",
+                       POCKET, 64, 32, 16, 8, 26,
+                       panel=dict(init=[(0xFFCE, 11), (0xE062, 12), (0x5F00, 10)]))
+    r["outdoor4"] = case(prusim, fw, work, "outdoor 32x16 1/4 scan, zstripe, direct row select",
+                         BONE, 32, 16, 4, 8, 26, panel=dict(mux="zstripe", panel_w=32, direct=True))
+    r["outdoor8"] = case(prusim, fw, work, "outdoor 64x32 1/8 scan, stripe, chain of 2", BONE,
+                         128, 32, 8, 8, 26, panel=dict(mux="stripe", panel_w=64))
+    r["12bit"] = case(prusim, fw, work, "64x32 12 planes, LSB 1 cycle (5 ns)", BONE, 64, 32, 16,
+                      12, 1)
     bad_start(prusim, fw, work)
     for k, period in (("bone", 10), ("33mhz", 6), ("pocket", 16)):
         if r[k]:
@@ -231,7 +278,10 @@ def main():
                 "64x64": "all-R30 map, 64x64 1/32 scan, 6 planes",
                 "32x16": "all-R30 map, 32x16 1/8 scan, 8 planes, 25 MHz clock",
                 "33mhz": "all-R30 map, one 64x32 panel, 8 planes, the fastest clock (delay 1)",
-                "pocket": "PocketScroller map (data on GPIO bank 1), 64x32, 8 planes"}
+                "pocket": "PocketScroller map (data on GPIO bank 1), 64x32, 8 planes",
+                "outdoor4": "all-R30 map, outdoor 32x16 1/4 scan (zstripe, direct rows), 8 planes",
+                "outdoor8": "all-R30 map, 2 outdoor 64x32 1/8 scan (stripe), 8 planes",
+                "12bit": "all-R30 map, one 64x32 panel, 12 planes"}
         for k, v in r.items():
             if v and k in what:
                 c = v["clk"]

@@ -34,13 +34,13 @@ def image(width, height, fmt, seed):
 def main(conv, work):
     for corr in ("cie1931", "linear"):
         bad = []
-        for planes in range(1, 12):
+        for planes in range(1, 13):
             out = subprocess.run([conv, "lut", str(planes), corr], capture_output=True,
                                  text=True).stdout.split()
             want = [hub75_model.level(v, planes, corr) for v in range(256)]
             if [int(x) for x in out] != want:  # a crash prints nothing: differs
                 bad.append(planes)
-        check("levels of all 256 values, 1..11 planes, %s" % corr, not bad, "planes %s" % bad)
+        check("levels of all 256 values, 1..12 planes, %s" % corr, not bad, "planes %s" % bad)
     layouts = [
         ("64x32 R30 8 planes cie1931 xrgb8888", 64, 32, 16, 8, "cie1931", 1, [0, 1, 2, 3, 4, 5],
          "xrgb8888"),
@@ -78,7 +78,62 @@ def main(conv, work):
                                                                        planes, corr), rows, planes)
         check("frame buffer: %s, then rectangle (%d,%d)-(%d,%d) changed" % (name, x1, y1, x2, y2),
               got == want)
+    mux_checks(conv, work)
     return 1 if FAILS else 0
+
+
+def mux_checks(conv, work):
+    """hub75_mux_table() against hub75_model.mux_map() for every wiring on
+    the panels it fits, and a frame buffer through one."""
+    for name in hub75_model.MUXES:
+        for w, h, chain in ((32, 16, 1), (64, 32, 2), (64, 64, 1)):
+            out = subprocess.run([conv, "mux", name, str(w), str(h), str(chain)],
+                                 capture_output=True, text=True).stdout.split("\n")
+            s = 2
+            want = [None] * (w * chain * h)
+            fits = True
+            for y in range(h):
+                for vx in range(w * chain):
+                    c, x = divmod(vx, w)
+                    mx, my = hub75_model.mux_map(name, w, h, x, y)
+                    i = my * w * chain * s + c * w * s + mx
+                    if not (0 <= mx < w * s and 0 <= my < h // s) or want[i] is not None:
+                        fits = False
+                    else:
+                        want[i] = "%d %d" % (vx, y)
+            if not fits or None in want:
+                check("%s on %dx%d x %d: refused, it does not fit" % (name, w, h, chain),
+                      out[0] == "bad", out[0])
+                continue
+            check("%s on %dx%d x %d: every LED where the model puts it" % (name, w, h, chain),
+                  out[:-1] == want, "%d entries" % (len(out) - 1))
+    check("a wiring that does not fit is refused: zstripe on 32x12",
+          subprocess.run([conv, "mux", "zstripe", "32", "12", "1"], capture_output=True,
+                         text=True).stdout == "bad\n")
+    for name, w, h, rows, chain in (("zstripe", 32, 16, 4, 1), ("stripe", 64, 32, 8, 2),
+                                     ("p10-outdoor-1r1g1-2", 32, 16, 4, 2)):
+        a = image(w * chain, h, "xrgb8888", 7)
+        pa = os.path.join(work, "a.raw")
+        with open(pa, "wb") as f:
+            f.write(a)
+        bits = [0, 1, 2, 3, 4, 5]
+        args = [conv, "frame", "8", "cie1931", str(w * chain), str(h), str(rows), "1"] + \
+            [str(b) for b in bits] + ["xrgb8888", pa, "mux=%s:%d" % (name, w)]
+        got = subprocess.run(args, capture_output=True).stdout
+        img = hub75_model.expected(a, "XRGB8888", w * chain, h, 8, "cie1931")
+        want = hub75_model.frame_buffer(bits, 1, hub75_model.driven(img, name, w), rows, 8)
+        check("frame buffer: %s, %dx%d 1/%d scan, chain of %d" % (name, w, h, rows, chain),
+              got == want, "%d/%d bytes" % (len(got), len(want)))
+        # a rectangle redraws the whole panel as driven
+        b = bytearray(image(w * chain, h, "xrgb8888", 8))
+        pb = os.path.join(work, "b.raw")
+        with open(pb, "wb") as f:
+            f.write(b)
+        got = subprocess.run(args[:-1] + ["1", "1", "3", "3", pb, args[-1]],
+                             capture_output=True).stdout
+        img = hub75_model.expected(bytes(b), "XRGB8888", w * chain, h, 8, "cie1931")
+        want = hub75_model.frame_buffer(bits, 1, hub75_model.driven(img, name, w), rows, 8)
+        check("frame buffer: %s, a rectangle of a new image redraws it all" % name, got == want)
 
 
 if __name__ == "__main__":

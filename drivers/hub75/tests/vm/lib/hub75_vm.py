@@ -107,6 +107,26 @@ class Recorder:
         self.info("%s: %d trace bytes, refresh %d cycles" % (name, len(data), disp.refresh))
 
 
+    def capture_start(self, disp, name, meta, enable):
+        """The pins from ENABLE() (a callable, True if it worked) on, the
+        first 262144 changes: what the firmware does as the display starts.
+        Waits for a whole refresh after it.  False if ENABLE failed."""
+        with open(SIM + "/trace", "w") as f:
+            f.write("clear first")
+        if not enable() or not disp.settle():
+            return False
+        wait_cycles(int(1.2 * disp.refresh))
+        with open(SIM + "/trace", "rb") as f:
+            data = f.read()
+        with open(os.path.join(self.out, name + ".trace"), "wb") as f:
+            f.write(data)
+        self.meta.append(dict(meta, name=name, refresh=disp.refresh, kind="start"))
+        with open(os.path.join(self.out, "hub75.json"), "w") as f:
+            json.dump(self.meta, f, indent=1)
+        self.info("%s: %d trace bytes from the start" % (name, len(data)))
+        return True
+
+
 def to_rgb565(xrgb):
     """RGB565 bytes of XRGB8888 bytes (the top bits of each component)."""
     out = bytearray()
