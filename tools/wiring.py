@@ -48,16 +48,22 @@ def pin_name(header, n, sep):
 
 def svg(name, ov, cells, table, board):
     """The picture of one overlay."""
-    used = {}
+    balls = {}
     for off, mode in sorted(ov.pads.items()):
         pad = table.pads.get(off)
         hdr = pad.header.get(board) if pad else None
         if not hdr:
             continue
-        hdr = hdr.rstrip("AB")
         sig = pad.signals.get(mode, "mode %d" % mode)
         out = "_r30_" in sig or (sig.startswith("gpio") and not cells.get(off, 0) & 0x20)
-        used[hdr] = (sig, out, pad.short)
+        balls.setdefault(hdr.rstrip("AB"), []).append((sig, out, pad.short, hdr))
+    # P9_41 and P9_42 are two balls each: the pin shows the one that drives
+    # it, a line below the other one
+    used, others = {}, []
+    for hdr, bs in balls.items():
+        bs.sort(key=lambda b: not b[1])
+        used[hdr] = bs[0][:3]
+        others += ["%s %s %s %s" % (b[3], b[2], b[0], "out" if b[1] else "in") for b in bs[1:]]
     row, colw, top, left = 16, 600, 70, 10
     hdrs = HEADERS[board]
     rows = max(n for _, n, _ in hdrs) // 2
@@ -98,6 +104,10 @@ def svg(name, ov, cells, table, board):
     if not used:
         o.append('<text x="%d" y="%d">No header pins: the PRUs only talk to Linux '
                  '(rpmsg).</text>' % (left, top + rows * row + 62))
+    if others:
+        o.append('<text x="%d" y="%d">%s</text>' % (
+            left, top + rows * row + 62, esc("Two balls on one pin, the other one muxed too: " +
+                                             ", ".join(sorted(others)))))
     o.append("</svg>")
     return "\n".join(o) + "\n"
 

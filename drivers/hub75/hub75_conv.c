@@ -20,7 +20,8 @@
  * longest plane, the shortest, the second longest, the second shortest ...:
  * each row's lit time is then spread over the refresh instead of coming in
  * one piece (Documentation/hub75.rst) - and @spread, which hub75_convert()
- * ORs together, a word per lanes planes, into the entries of six lines.
+ * ORs together, a word per lanes planes, into the entries of six lines
+ * (1- and 2-byte entries only).
  */
 void hub75_layout_finish(struct hub75_layout *l)
 {
@@ -30,6 +31,9 @@ void hub75_layout_finish(struct hub75_layout *l)
 		l->order[k] = k % 2 ? lo++ : --hi;
 	for (k = 0; k < l->planes; k++)
 		l->block_of_plane[l->order[k]] = k;
+	/* HUB75_DATA_BANKS has no use for @spread */
+	if (l->entry_bytes > 2)
+		return;
 	l->lanes = 8 / l->entry_bytes;
 	for (v = 0; v < 256; v++) {
 		for (k = 0; k < HUB75_SPREAD_WORDS; k++)
@@ -219,24 +223,25 @@ static void hub75_mux_map(enum hub75_mux mux, unsigned int w, unsigned int h,
 }
 
 /**
- * hub75_mux_table() - struct hub75_layout's @mux of a chain of panels
+ * hub75_mux_table() - struct hub75_layout's @mux of chains of panels
  * @mux: how each panel is wired
  * @panel_width: a panel's width as seen
  * @panel_height: its height as seen
- * @chain: panels in the chain, left to right on the display
- * @table: room for @panel_width * @chain * @panel_height entries
+ * @chain: panels in a chain, left to right on the display
+ * @outputs: chains, output o showing rows o * @panel_height and on
+ * @table: room for @panel_width * @chain * @panel_height * @outputs entries
  *
  * Return: false if the wiring does not fit the panel (not every position
  * of the panel as driven lights exactly one LED).
  */
 bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int panel_height,
-		     unsigned int chain, u32 *table)
+		     unsigned int chain, unsigned int outputs, u32 *table)
 {
 	unsigned int s = hub75_mux_stretch(mux), clocks = panel_width * chain * s;
-	unsigned int n = panel_width * chain * panel_height, i, x, y, mx, my;
+	unsigned int n = panel_width * chain * panel_height, i, o, x, y, mx, my;
 
 	if (mux >= HUB75_MUX_COUNT || panel_height % (4 * s) || panel_width % 8 ||
-	    panel_width * chain > 0xffff || panel_height > 0xffff)
+	    panel_width * chain > 0xffff || panel_height * outputs > 0xffff)
 		return false;
 	for (i = 0; i < n; i++)
 		table[i] = HUB75_MUX_UNSET;
@@ -251,7 +256,71 @@ bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int 
 			table[i] = y << 16 | x;
 		}
 	}
+	/* the other outputs: the same, @panel_height rows further down */
+	for (o = 1; o < outputs; o++)
+		for (i = 0; i < n; i++)
+			table[o * n + i] = table[i] + (o * panel_height << 16);
 	return true;
+}
+
+static void hub75_put32(u8 *p, u32 v)
+{
+	p[0] = v;
+	p[1] = v >> 8;
+	p[2] = v >> 16;
+	p[3] = v >> 24;
+}
+
+/* HUB75_DATA_BANKS: output @o's bits of clock @x of row @r into @w */
+static void hub75_bank_words(const struct hub75_layout *l, const u8 *src, unsigned int pitch,
+			     enum hub75_format format, unsigned int o, unsigned int r,
+			     unsigned int x, u32 (*w)[HUB75_BANK_SLOTS])
+{
+	unsigned int half, c, p;
+	u8 v[HUB75_LINES];
+
+	for (half = 0; half < 2; half++) {
+		u32 at = l->mux[((o * 2 + half) * l->rows + r) * l->clocks + x];
+
+		hub75_pixel(src, pitch, format, at & 0xffff, at >> 16, v + 3 * half);
+	}
+	for (c = 0; c < HUB75_LINES; c++) {
+		u32 bit = 1u << l->bank_bit[o][c];
+		unsigned int slot = l->bank_slot[o][c];
+		u16 lv = l->lut[v[c]];
+
+		for (p = 0; lv; p++, lv >>= 1)
+			if (lv & 1)
+				w[p][slot] |= bit;
+	}
+}
+
+/*
+ * HUB75_DATA_BANKS: every entry of every block.  Entry x of row r: per
+ * slot, the bits of each output's lines whose level has the plane's bit
+ * set; output o's lines show rows r and r + rows of its band (@mux).
+ */
+static void hub75_convert_banks(const struct hub75_layout *l, u8 *buf, const u8 *src,
+				unsigned int pitch, enum hub75_format format)
+{
+	size_t plane_bytes = (size_t)l->rows * l->row_bytes;
+	unsigned int r, x, o, k, p;
+	u8 *blocks[HUB75_MAX_PLANES];
+
+	for (p = 0; p < l->planes; p++)
+		blocks[p] = buf + l->block_of_plane[p] * plane_bytes;
+	for (r = 0; r < l->rows; r++) {
+		for (x = 0; x < l->clocks; x++) {
+			u32 w[HUB75_MAX_PLANES][HUB75_BANK_SLOTS] = { };
+			size_t off = (size_t)r * l->row_bytes + (size_t)x * l->entry_bytes;
+
+			for (o = 0; o < l->outputs; o++)
+				hub75_bank_words(l, src, pitch, format, o, r, x, w);
+			for (p = 0; p < l->planes; p++)
+				for (k = 0; k < HUB75_BANK_SLOTS; k++)
+					hub75_put32(blocks[p] + off + 4 * k, w[p][k]);
+		}
+	}
 }
 
 /**
@@ -284,6 +353,10 @@ void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 	unsigned int y, r, x, p, c, k;
 	u8 *blocks[HUB75_MAX_PLANES];
 
+	if (l->entry_bytes == 4 * HUB75_BANK_SLOTS) {
+		hub75_convert_banks(l, buf, src, pitch, format);
+		return;
+	}
 	for (p = 0; p < l->planes; p++)
 		blocks[p] = buf + l->block_of_plane[p] * plane_bytes;
 	for (c = 0; c < HUB75_LINES; c++)

@@ -53,6 +53,8 @@ enum hub75_mux {
 
 extern const char *const hub75_mux_names[HUB75_MUX_COUNT];
 
+#define HUB75_MAX_OUTPUTS	8
+
 /* u64 words of struct hub75_layout's @spread: 16-bit lanes, 4 a word */
 #define HUB75_SPREAD_WORDS	((HUB75_MAX_PLANES + 3) / 4)
 
@@ -68,11 +70,18 @@ enum hub75_correction {
  * @height: rows of the display
  * @clocks: clocks per row: @width, times the stretch of @mux
  * @rows: address rows (the panel's scan): @height / 2 / the stretch
- * @mux: NULL, or for each position of the panels as driven (row r of the
- *	top half or r + @rows, clock x: index (r * @clocks + x)), the pixel
- *	of the display it lights, y << 16 | x (hub75_mux_table())
+ * @mux: NULL, or for each position of the panels as driven (output o, row
+ *	r of the top half or r + @rows, clock x: index ((o * 2 * @rows + r) *
+ *	@clocks + x)), the pixel of the display it lights, y << 16 | x
+ *	(hub75_mux_table()); always set with HUB75_DATA_BANKS
+ * @outputs: parallel outputs (chains), each a band of the display's rows
+ *	(HUB75_DATA_BANKS; 1 otherwise)
+ * @bank_slot: HUB75_DATA_BANKS: the slot (word of an entry) of each
+ *	output's lines
+ * @bank_bit: HUB75_DATA_BANKS: their bits in the slot's bank
  * @planes: bit planes, 1..HUB75_MAX_PLANES
- * @entry_bytes: bytes per clock in a block: 1 (HUB75_DATA_R30) or 2
+ * @entry_bytes: bytes per clock in a block: 1 (HUB75_DATA_R30), 2
+ *	(HUB75_DATA_GPIO) or 16 (HUB75_DATA_BANKS)
  * @row_bytes: bytes of a block: @width * @entry_bytes rounded up to
  *	HUB75_CHUNK_BYTES (the driver refuses geometries that need rounding)
  * @order: the planes in the order they are shown (@order[0] first)
@@ -90,6 +99,9 @@ struct hub75_layout {
 	unsigned int clocks;
 	unsigned int rows;
 	const u32 *mux;
+	unsigned int outputs;
+	u8 bank_slot[HUB75_MAX_OUTPUTS][HUB75_LINES];
+	u8 bank_bit[HUB75_MAX_OUTPUTS][HUB75_LINES];
 	unsigned int planes;
 	unsigned int entry_bytes;
 	unsigned int row_bytes;
@@ -113,7 +125,7 @@ void hub75_layout_finish(struct hub75_layout *l);
 size_t hub75_buffer_size(const struct hub75_layout *l);
 unsigned int hub75_mux_stretch(enum hub75_mux mux);
 bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int panel_height,
-		     unsigned int chain, u32 *table);
+		     unsigned int chain, unsigned int outputs, u32 *table);
 void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,
 		   unsigned int pitch, enum hub75_format format,
 		   const struct hub75_rect *rect);

@@ -49,7 +49,8 @@
 #include "hub75_proto.h"
 
 #define HUB75_PRU_HZ		200000000u
-#define HUB75_MIN_REFRESH_HZ	100
+#define HUB75_MIN_REFRESH_HZ	100	/* prukit,min-refresh-hz's default */
+#define HUB75_LOWEST_REFRESH_HZ	30
 #define HUB75_MAX_BRIGHTNESS	100
 #define HUB75_MAX_CHAIN		16
 #define HUB75_DEFAULT_CLOCK_HZ	20000000u
@@ -62,7 +63,11 @@
 #define HUB75_CHUNK_CYCLES	53	/* a 32-byte load from DDR, add, branch */
 #define HUB75_BLOCK_CYCLES	16	/* latch, address, lighting's branches */
 #define HUB75_GPIO_TAIL_CYCLES	24	/* the last pixel's clock */
-#define HUB75_GPIO_PIXEL_CYCLES	16	/* two GPIO writes, 8 cycles each */
+#define HUB75_GPIO_WRITE_CYCLES	8	/* a GPIO write's time on the L4 path */
+#define HUB75_GPIO_PIXEL_CYCLES	(2 * HUB75_GPIO_WRITE_CYCLES)	/* CLEAR, SET */
+/* hub75_banks.S: a 64-byte load from DDR per 4 clocks; latch, address */
+#define HUB75_BANKS_CHUNK_CYCLES 60
+#define HUB75_BANKS_BLOCK_CYCLES 120
 
 static const u32 hub75_gpio_banks[PRUKIT_PRU_GPIO_BANKS] = {
 	0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000,
@@ -170,7 +175,8 @@ static int hub75_start(struct hub75 *h)
 	memcpy_toio(HUB75_CTRL(h, buf_addr), &h->params.buf_addr,
 		    offsetof(struct hub75_ctrl, oe_cycles) -
 		    offsetof(struct hub75_ctrl, buf_addr));
-	memcpy_toio(HUB75_CTRL(h, init), h->params.init, sizeof(h->params.init));
+	memcpy_toio(HUB75_CTRL(h, init), h->params.init,
+		    sizeof(struct hub75_ctrl) - offsetof(struct hub75_ctrl, init));
 	hub75_write_oe(h);
 	writel(h->front, HUB75_CTRL(h, show));
 	ret = hub75_command(h, HUB75_CMD_START);
@@ -549,36 +555,47 @@ static int hub75_r30_bit(struct device *dev, const char *prop, u32 *bit)
 	return 0;
 }
 
+/* GPIO @i of the list @prop ("data-gpios" ...): its AM335x bank and bit */
+static int hub75_gpio_at(struct device *dev, const char *prop, unsigned int i, u32 *bank,
+			 u32 *bit)
+{
+	struct of_phandle_args args;
+	int b, ret;
+
+	ret = of_parse_phandle_with_args(dev->of_node, prop, "#gpio-cells", i, &args);
+	if (ret)
+		return dev_err_probe(dev, ret, "\"%s\" has no pin %u\n", prop, i);
+	b = prukit_pru_gpio_bank(args.np);
+	of_node_put(args.np);
+	if (b < 0 || args.args_count < 1 || args.args[0] > 31)
+		return dev_err_probe(dev, -EINVAL, "\"%s\" %u is no pin of an AM335x GPIO bank\n",
+				     prop, i);
+	*bank = b;
+	*bit = args.args[0];
+	return 0;
+}
+
 /* Data lines on a GPIO bank: all six in one bank, 16 bits apart at most */
 static int hub75_parse_gpio_data(struct hub75 *h, struct hub75_ctrl *p)
 {
 	struct device *dev = h->dev;
-	u32 bits[HUB75_LINES], lo = 31;
+	u32 bits[HUB75_LINES], lo = 31, bank = 0, b;
 	struct gpio_descs *descs;
-	int bank = -1, ret;
 	unsigned int i;
+	int ret;
 
+	if (of_count_phandle_with_args(dev->of_node, "data-gpios", "#gpio-cells") != HUB75_LINES)
+		return dev_err_probe(dev, -EINVAL,
+				     "\"data-gpios\" needs 6 pins (R1 G1 B1 R2 G2 B2)\n");
 	for (i = 0; i < HUB75_LINES; i++) {
-		struct of_phandle_args args;
-		int b;
-
-		ret = of_parse_phandle_with_args(dev->of_node, "data-gpios", "#gpio-cells",
-						 i, &args);
+		ret = hub75_gpio_at(dev, "data-gpios", i, &b, &bits[i]);
 		if (ret)
-			return dev_err_probe(dev, ret,
-					     "\"data-gpios\" needs 6 pins (R1 G1 B1 R2 G2 B2)\n");
-		b = prukit_pru_gpio_bank(args.np);
-		of_node_put(args.np);
-		if (b < 0 || args.args_count < 1 || args.args[0] > 31)
+			return ret;
+		if (i && b != bank)
 			return dev_err_probe(dev, -EINVAL,
-					     "\"data-gpios\" %u is no pin of an AM335x GPIO bank\n",
-					     i);
-		if (bank >= 0 && b != bank)
-			return dev_err_probe(dev, -EINVAL,
-					     "\"data-gpios\": the PRU writes one bank; pins are in %d and %d\n",
+					     "\"data-gpios\": the PRU writes one bank; pins are in %u and %u\n",
 					     bank, b);
 		bank = b;
-		bits[i] = args.args[0];
 		lo = min(lo, bits[i]);
 	}
 	for (i = 0; i < HUB75_LINES; i++) {
@@ -600,6 +617,138 @@ static int hub75_parse_gpio_data(struct hub75 *h, struct hub75_ctrl *p)
 	return 0;
 }
 
+/* @row_addr of the address lines @addr: binary, or one line low per row */
+static void hub75_row_addr(struct hub75 *h, struct hub75_ctrl *p, const u32 *addr,
+			   unsigned int lines, bool direct)
+{
+	unsigned int r, i;
+
+	for (r = 0; r < h->layout.rows; r++) {
+		p->row_addr[r] = 0;
+		for (i = 0; i < lines; i++)
+			if (direct ? r != i : r & BIT(i))
+				p->row_addr[r] |= BIT(addr[i]);
+	}
+}
+
+/* One control line of HUB75_DATA_BANKS ("clk-gpios" ...), in bank @cb */
+static int hub75_ctrl_gpio(struct device *dev, const char *prop, unsigned int i, u32 cb,
+			   u32 *taken, u32 *bit)
+{
+	u32 bank;
+	int ret;
+
+	ret = hub75_gpio_at(dev, prop, i, &bank, bit);
+	if (ret)
+		return ret;
+	if (bank != cb)
+		return dev_err_probe(dev, -EINVAL,
+				     "\"%s\": the control lines must share one GPIO bank (%u, not %u)\n",
+				     prop, cb, bank);
+	if (taken[bank] & BIT(*bit))
+		return dev_err_probe(dev, -EINVAL, "\"%s\": gpio%u_%u is used twice\n", prop,
+				     bank, *bit);
+	taken[bank] |= BIT(*bit);
+	return 0;
+}
+
+/*
+ * HUB75_DATA_BANKS: every line a GPIO.  The control lines in one bank
+ * (slot 3, with the clock in its mask), the outputs' data lines anywhere
+ * in banks 0-3, the other banks with data in slots 0..2 (hub75_proto.h).
+ */
+static int hub75_parse_banks(struct hub75 *h, struct hub75_ctrl *p, bool direct)
+{
+	struct hub75_layout *l = &h->layout;
+	unsigned int addr_lines = direct ? l->rows : ilog2(l->rows);
+	unsigned int lines = l->outputs * HUB75_LINES, i, k, slot;
+	u32 taken[PRUKIT_PRU_GPIO_BANKS] = { }, data_banks = 0;
+	u32 cb, clk, lat, oe, addr[5], bank[HUB75_MAX_OUTPUTS * HUB75_LINES];
+	u32 bit[HUB75_MAX_OUTPUTS * HUB75_LINES];
+	struct device *dev = h->dev;
+	struct gpio_descs *descs;
+	struct gpio_desc *desc;
+	int ret;
+
+	ret = hub75_gpio_at(dev, "clk-gpios", 0, &cb, &clk);
+	if (ret)
+		return ret;
+	ret = hub75_ctrl_gpio(dev, "clk-gpios", 0, cb, taken, &clk);
+	if (!ret)
+		ret = hub75_ctrl_gpio(dev, "lat-gpios", 0, cb, taken, &lat);
+	if (!ret)
+		ret = hub75_ctrl_gpio(dev, "oe-gpios", 0, cb, taken, &oe);
+	if (ret)
+		return ret;
+	if (of_count_phandle_with_args(dev->of_node, "addr-gpios", "#gpio-cells") != addr_lines)
+		return dev_err_probe(dev, -EINVAL, "\"addr-gpios\" needs %u pins for the scan\n",
+				     addr_lines);
+	for (i = 0; i < addr_lines; i++) {
+		ret = hub75_ctrl_gpio(dev, "addr-gpios", i, cb, taken, &addr[i]);
+		if (ret)
+			return ret;
+		p->addr_mask |= BIT(addr[i]);
+	}
+	if (of_count_phandle_with_args(dev->of_node, "data-gpios", "#gpio-cells") != lines)
+		return dev_err_probe(dev, -EINVAL,
+				     "\"data-gpios\" needs %u pins: R1 G1 B1 R2 G2 B2 of each of %u outputs\n",
+				     lines, l->outputs);
+	for (i = 0; i < lines; i++) {
+		ret = hub75_gpio_at(dev, "data-gpios", i, &bank[i], &bit[i]);
+		if (ret)
+			return ret;
+		if (taken[bank[i]] & BIT(bit[i]))
+			return dev_err_probe(dev, -EINVAL, "\"data-gpios\": gpio%u_%u twice\n",
+					     bank[i], bit[i]);
+		taken[bank[i]] |= BIT(bit[i]);
+		if (bank[i] != cb)
+			data_banks |= BIT(bank[i]);
+	}
+	/* slots: the other banks up to slot 2, the control bank in slot 3 */
+	slot = HUB75_BANK_CTRL_SLOT - hweight32(data_banks);
+	for (k = 0; k < PRUKIT_PRU_GPIO_BANKS; k++) {
+		unsigned int s = k == cb ? HUB75_BANK_CTRL_SLOT : slot;
+
+		if (k != cb && !(data_banks & BIT(k)))
+			continue;
+		p->bank_addr[s] = hub75_gpio_banks[k];
+		p->bank_used |= BIT(s);
+		for (i = 0; i < lines; i++) {
+			if (bank[i] != k)
+				continue;
+			p->bank_mask[s] |= BIT(bit[i]);
+			l->bank_slot[i / HUB75_LINES][i % HUB75_LINES] = s;
+			l->bank_bit[i / HUB75_LINES][i % HUB75_LINES] = bit[i];
+		}
+		if (k != cb)
+			slot++;
+	}
+	p->bank_mask[HUB75_BANK_CTRL_SLOT] |= BIT(clk);
+	hub75_row_addr(h, p, addr, addr_lines, direct);
+
+	/* Owned through gpiolib: outputs, nothing else claims them; dark */
+	descs = devm_gpiod_get_array(dev, "data", GPIOD_OUT_LOW);
+	if (IS_ERR(descs))
+		return dev_err_probe(dev, PTR_ERR(descs), "cannot take the data GPIOs\n");
+	descs = devm_gpiod_get_array(dev, "addr", GPIOD_OUT_LOW);
+	if (IS_ERR(descs))
+		return dev_err_probe(dev, PTR_ERR(descs), "cannot take the address GPIOs\n");
+	desc = devm_gpiod_get(dev, "oe", GPIOD_OUT_HIGH);
+	if (!IS_ERR(desc))
+		desc = devm_gpiod_get(dev, "lat", GPIOD_OUT_LOW);
+	if (!IS_ERR(desc))
+		desc = devm_gpiod_get(dev, "clk", GPIOD_OUT_LOW);
+	if (IS_ERR(desc))
+		return dev_err_probe(dev, PTR_ERR(desc), "cannot take the control GPIOs\n");
+	p->data_mode = HUB75_DATA_BANKS;
+	p->gpio_base = hub75_gpio_banks[cb];
+	p->clk_bit = clk;
+	p->lat_bit = lat;
+	p->oe_bit = oe;
+	l->entry_bytes = 4 * HUB75_BANK_SLOTS;
+	return 0;
+}
+
 /*
  * @direct: a line per row, the row's line low, the others high (outdoor
  * panels' "direct row select"); else the row's number in binary, A its
@@ -610,9 +759,11 @@ static int hub75_parse_pins(struct hub75 *h, struct hub75_ctrl *p, bool direct)
 	unsigned int addr_lines = direct ? h->layout.rows : ilog2(h->layout.rows);
 	struct device *dev = h->dev;
 	u32 bits[HUB75_LINES], addr[5], clk, lat, oe;
-	unsigned int i, r;
+	unsigned int i;
 	int ret, n;
 
+	if (device_property_present(dev, "clk-gpios"))
+		return hub75_parse_banks(h, p, direct);
 	ret = hub75_r30_bit(dev, "prukit,clk-r30-bit", &clk);
 	if (!ret)
 		ret = hub75_r30_bit(dev, "prukit,lat-r30-bit", &lat);
@@ -638,12 +789,7 @@ static int hub75_parse_pins(struct hub75 *h, struct hub75_ctrl *p, bool direct)
 	    (p->addr_mask & (BIT(clk) | BIT(lat) | BIT(oe))))
 		return dev_err_probe(dev, -EINVAL,
 				     "clock, latch, OE and address lines need R30 bits of their own\n");
-	for (r = 0; r < h->layout.rows; r++) {
-		p->row_addr[r] = 0;
-		for (i = 0; i < addr_lines; i++)
-			if (direct ? r != i : r & BIT(i))
-				p->row_addr[r] |= BIT(addr[i]);
-	}
+	hub75_row_addr(h, p, addr, addr_lines, direct);
 	p->clk_bit = clk;
 	p->lat_bit = lat;
 	p->oe_bit = oe;
@@ -679,11 +825,29 @@ static u64 hub75_refresh_cycles(struct hub75 *h, u32 pixel_cycles)
 	u64 lit = 0;
 	unsigned int k;
 
+	if (h->params.data_mode == HUB75_DATA_BANKS)
+		block = (u64)l->clocks / 4 * HUB75_BANKS_CHUNK_CYCLES +
+			(u64)l->clocks * pixel_cycles + HUB75_BANKS_BLOCK_CYCLES;
 	if (h->params.data_mode == HUB75_DATA_GPIO)
 		block += HUB75_GPIO_TAIL_CYCLES;
 	for (k = 0; k < l->planes; k++)
 		lit += (u64)h->lsb_cycles << k;
 	return l->rows * (l->planes * block + lit);
+}
+
+static void hub75_kvfree(void *p)
+{
+	kvfree(p);
+}
+
+/* kvcalloc() for the device's lifetime: a wall's table passes 128 KiB */
+static void *hub75_devm_kvcalloc(struct device *dev, size_t n, size_t size)
+{
+	void *p = kvcalloc(n, size, GFP_KERNEL);
+
+	if (!p || devm_add_action_or_reset(dev, hub75_kvfree, p))
+		return NULL;
+	return p;
 }
 
 /* FM6126A-class driver chips: their register words, in the order sent */
@@ -698,7 +862,7 @@ static const struct hub75_panel_type hub75_panel_types[] = {
 	{ "fm6127", { HUB75_INIT(0xffce, 11), HUB75_INIT(0xe062, 12), HUB75_INIT(0x5f00, 10) } },
 };
 
-static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain)
+static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain, bool banks)
 {
 	struct device *dev = h->dev;
 	struct hub75_layout *l = &h->layout;
@@ -726,12 +890,13 @@ static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain)
 				     "a %u-row panel with scan 1/%u and multiplexing %s: the rows must be %u\n",
 				     height, l->rows, mux, 2 * l->rows * hub75_mux_stretch(m));
 	l->clocks = l->width * hub75_mux_stretch(m);
-	if (m == HUB75_MUX_DIRECT)
+	/* with every line on GPIO banks the conversion always goes through it */
+	if (m == HUB75_MUX_DIRECT && !banks)
 		return 0;
-	table = devm_kcalloc(dev, (size_t)l->width * height, sizeof(*table), GFP_KERNEL);
+	table = hub75_devm_kvcalloc(dev, (size_t)l->width * height * l->outputs, sizeof(*table));
 	if (!table)
 		return -ENOMEM;
-	if (!hub75_mux_table(m, width, height, chain, table))
+	if (!hub75_mux_table(m, width, height, chain, l->outputs, table))
 		return dev_err_probe(dev, -EINVAL, "multiplexing %s does not fit a %ux%u panel\n",
 				     mux, width, height);
 	l->mux = table;
@@ -745,8 +910,9 @@ static int hub75_parse(struct hub75 *h)
 	struct hub75_ctrl *p = &h->params;
 	u32 width, height, scan, chain = 1, outputs = 1, planes = HUB75_DEFAULT_PLANES;
 	u32 lsb_ns = HUB75_DEFAULT_LSB_NS, clock = HUB75_DEFAULT_CLOCK_HZ, pixel_cycles;
+	u32 min_hz = HUB75_MIN_REFRESH_HZ;
 	const char *corr = "cie1931", *row_address = "binary";
-	bool direct;
+	bool direct, banks = device_property_present(dev, "clk-gpios");
 	u64 cycles;
 	int ret;
 
@@ -762,6 +928,7 @@ static int hub75_parse(struct hub75 *h)
 	device_property_read_u32(dev, "clock-frequency", &clock);
 	device_property_read_string(dev, "prukit,correction", &corr);
 	device_property_read_string(dev, "prukit,row-address", &row_address);
+	device_property_read_u32(dev, "prukit,min-refresh-hz", &min_hz);
 
 	if (scan != 4 && scan != 8 && scan != 16 && scan != 32)
 		return dev_err_probe(dev, -EINVAL, "scan 1/%u: 1/4, 1/8, 1/16 or 1/32\n", scan);
@@ -779,17 +946,22 @@ static int hub75_parse(struct hub75 *h)
 	if (chain < 1 || chain > HUB75_MAX_CHAIN)
 		return dev_err_probe(dev, -EINVAL, "chain of %u panels: 1..%u\n", chain,
 				     HUB75_MAX_CHAIN);
-	if (outputs != 1)
+	if (outputs < 1 || outputs > HUB75_MAX_OUTPUTS || (outputs > 1 && !banks))
 		return dev_err_probe(dev, -EINVAL,
-				     "%u parallel outputs: this driver drives one\n", outputs);
+				     "%u parallel outputs: 1..%u, more than one with every line on GPIO (clk-gpios)\n",
+				     outputs, HUB75_MAX_OUTPUTS);
+	if (min_hz < HUB75_LOWEST_REFRESH_HZ)
+		return dev_err_probe(dev, -EINVAL, "\"prukit,min-refresh-hz\" = %u: %u at least\n",
+				     min_hz, HUB75_LOWEST_REFRESH_HZ);
 	if (planes < 1 || planes > HUB75_MAX_PLANES)
 		return dev_err_probe(dev, -EINVAL, "%u bit planes: 1..%u\n", planes,
 				     HUB75_MAX_PLANES);
 	l->width = width * chain;
-	l->height = height;
+	l->height = height * outputs;
+	l->outputs = outputs;
 	l->rows = scan;
 	l->planes = planes;
-	ret = hub75_parse_panel(h, width, height, chain);
+	ret = hub75_parse_panel(h, width, height, chain, banks);
 	if (ret)
 		return ret;
 	if (!strcmp(corr, "cie1931"))
@@ -812,7 +984,9 @@ static int hub75_parse(struct hub75 *h)
 				     HUB75_MAX_ROW_BYTES / l->entry_bytes);
 	hub75_layout_finish(l);
 
-	if (p->data_mode == HUB75_DATA_R30) {
+	if (p->data_mode == HUB75_DATA_BANKS) {
+		pixel_cycles = (2 * hweight8(p->bank_used) + 1) * HUB75_GPIO_WRITE_CYCLES;
+	} else if (p->data_mode == HUB75_DATA_R30) {
 		/* 4 + 2 * delay cycles a pixel, the nearest clock not above */
 		u32 delay = DIV_ROUND_UP(DIV_ROUND_UP(HUB75_PRU_HZ, max(clock, 1u)), 2);
 
@@ -825,17 +999,22 @@ static int hub75_parse(struct hub75 *h)
 		pixel_cycles = HUB75_GPIO_PIXEL_CYCLES;
 	}
 	h->lsb_cycles = DIV_ROUND_CLOSEST(lsb_ns, 5);
+	/* OE on a GPIO bank: its two writes are at least one write's time apart */
+	if (banks && h->lsb_cycles < HUB75_GPIO_WRITE_CYCLES)
+		return dev_err_probe(dev, -EINVAL,
+				     "LSB time %u ns: with OE on a GPIO bank, %u ns at least\n",
+				     lsb_ns, HUB75_GPIO_WRITE_CYCLES * 5);
 	if (!h->lsb_cycles || (u64)h->lsb_cycles << (planes - 1) > HUB75_MAX_OE_CYCLES)
 		return dev_err_probe(dev, -EINVAL,
 				     "LSB time %u ns with %u planes: the longest plane must be 5 ns..%u us\n",
 				     lsb_ns, planes, HUB75_MAX_OE_CYCLES / 200);
 
 	cycles = hub75_refresh_cycles(h, pixel_cycles);
-	if (cycles * HUB75_MIN_REFRESH_HZ > HUB75_PRU_HZ)
+	if (cycles * min_hz > HUB75_PRU_HZ)
 		return dev_err_probe(dev, -EINVAL,
 				     "%ux%u at %u bit planes: a refresh takes %llu PRU cycles, %llu Hz, below %u Hz; use fewer planes, a shorter chain or LSB time, or a faster clock\n",
 				     l->width, l->height, planes, cycles,
-				     div64_u64(HUB75_PRU_HZ, cycles), HUB75_MIN_REFRESH_HZ);
+				     div64_u64(HUB75_PRU_HZ, cycles), min_hz);
 	h->refresh_cycles = cycles;
 	p->row_bytes = l->row_bytes;
 	p->rows = l->rows;

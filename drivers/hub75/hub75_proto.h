@@ -13,7 +13,9 @@
  *    Documentation/hub75.rst).  A block holds one entry per clock of the
  *    row, in clock order: with HUB75_DATA_R30 a byte, R30's bits 0..7 as
  *    the data pins must be (the clock bit 0); with HUB75_DATA_GPIO a
- *    16-bit word, the GPIO bank's data bits shifted right by @gpio_shift.
+ *    16-bit word, the GPIO bank's data bits shifted right by @gpio_shift;
+ *    with HUB75_DATA_BANKS four 32-bit words, the data bits to set in the
+ *    GPIO banks of @bank_addr[0..3] (the others of @bank_mask cleared).
  *  - Per block the firmware clocks the row in (the clock on R30 bit
  *    @clk_bit), raises the latch, puts the row's address lines
  *    (@row_addr[row], within @addr_mask) on R30, lowers the latch, and
@@ -70,6 +72,21 @@
 /* @data_mode */
 #define HUB75_DATA_R30		0	/* data pins and clock in R30 bits 0..7 */
 #define HUB75_DATA_GPIO		1	/* data pins in one GPIO bank */
+#define HUB75_DATA_BANKS	2	/* every line on GPIO banks, see below */
+
+/*
+ * HUB75_DATA_BANKS: parallel outputs, every line a GPIO pin (the
+ * Octoscroller cape).  The control lines are bits of the bank at
+ * @gpio_base: @clk_bit, @lat_bit, @oe_bit, the address lines @addr_mask
+ * (@row_addr[] are values of that bank).  The data lines are in up to four
+ * banks, slots 0..3 of @bank_addr/@bank_mask, slot 3 always @gpio_base's
+ * bank with the clock in its @bank_mask; @bank_used has bit k set for a
+ * slot in use.  Per clock the firmware writes each used slot's
+ * CLEARDATAOUT and SETDATAOUT at once (the entry's word, and @bank_mask
+ * without it: the clock falls with slot 3), then the clock's SETDATAOUT.
+ */
+#define HUB75_BANK_SLOTS	4
+#define HUB75_BANK_CTRL_SLOT	3
 
 /* GPIO bank registers the firmware writes (AM335x TRM, chapter 25) */
 #define HUB75_GPIO_CLEARDATAOUT	0x190
@@ -114,6 +131,10 @@
  * @refresh_cycles: PRU: cycles the previous refresh took (0 before one did)
  * @init: START: the register words to clock in before the first refresh,
  *	HUB75_INIT(word, latch clocks), in order; the first 0 ends the list
+ * @bank_addr: START, HUB75_DATA_BANKS: the GPIO bank of each slot
+ * @bank_mask: START, HUB75_DATA_BANKS: the pins the firmware writes there
+ * @bank_used: START, HUB75_DATA_BANKS: bit k: slot k is used (bit 3 set)
+ * @reserved2: zero
  */
 struct hub75_ctrl {
 	struct prukit_ctrl_hdr hdr;
@@ -138,6 +159,10 @@ struct hub75_ctrl {
 	__u32 refreshes;
 	__u32 refresh_cycles;
 	__u32 init[HUB75_MAX_INIT];
+	__u32 bank_addr[HUB75_BANK_SLOTS];
+	__u32 bank_mask[HUB75_BANK_SLOTS];
+	__u8 bank_used;
+	__u8 reserved2[3];
 } __packed __aligned(4);
 #endif
 
@@ -153,6 +178,9 @@ struct hub75_ctrl {
 #define HUB75_CTRL_REFRESHES	(HUB75_CTRL_SHOW + 8)
 #define HUB75_CTRL_REFRESH_CYCLES (HUB75_CTRL_SHOW + 12)
 #define HUB75_CTRL_INIT		(HUB75_CTRL_SHOW + 16)
-#define HUB75_CTRL_SIZE		(HUB75_CTRL_INIT + 4 * HUB75_MAX_INIT)
+#define HUB75_CTRL_BANK_ADDR	(HUB75_CTRL_INIT + 4 * HUB75_MAX_INIT)	/* 256 */
+#define HUB75_CTRL_BANK_MASK	(HUB75_CTRL_BANK_ADDR + 4 * HUB75_BANK_SLOTS)
+#define HUB75_CTRL_BANK_USED	(HUB75_CTRL_BANK_MASK + 4 * HUB75_BANK_SLOTS)
+#define HUB75_CTRL_SIZE		(HUB75_CTRL_BANK_USED + 4)
 
 #endif /* _HUB75_PROTO_H */

@@ -50,8 +50,9 @@ os.makedirs(os.path.join(fw, "prukit"))
 for f in os.listdir(os.path.join(TOP, "out", "overlays")):
     if f.endswith(".dtbo"):
         shutil.copy(os.path.join(TOP, "out", "overlays", f), fw)
-for f in ("ws281x-pru0.elf", "ws281x-pru1.elf", "hub75-pru1.elf", "rpmsg-neopixel-pru0.elf",
-          "rpmsg-echo-pru1.elf", "beaglelogic-pru0.elf", "beaglelogic-pru1.elf"):
+for f in ("ws281x-pru0.elf", "ws281x-pru1.elf", "hub75-pru0.elf", "hub75-pru1.elf",
+          "rpmsg-neopixel-pru0.elf", "rpmsg-echo-pru1.elf", "beaglelogic-pru0.elf",
+          "beaglelogic-pru1.elf"):
     open(os.path.join(fw, "prukit", f), "w").close()
 dtdir = os.path.join(tmp, "dt")
 os.makedirs(dtdir)
@@ -114,6 +115,39 @@ check(rc == 1 and "no overlay nosuch" in err and "PRUKIT-WS281X-00A0" in err and
 rc, out, err = run("enable", "ws281x")
 check(rc == 0 and "already" in out, "ws281x resolves to PRUKIT-WS281X-00A0, not -48", out + err)
 
+# the Octoscroller cape: 8 HUB75 outputs, every line a GPIO, PRU0
+before = text(uenv)
+rc, out, err = run("enable", "hub75-octoscroller", "--free-pins")
+check(rc == 1 and "PRUKIT-WS281X-00A0: both use PRU0; both mux P9_29" in err and
+      "PRUKIT-HUB75-00A0: both mux P8_" in err and text(uenv) == before,
+      "enable hub75-octoscroller beside ws281x and hub75: refused (PRU0 and P9_29, the LCD "
+      "pads), file unchanged", err)
+octo = os.path.join(tmp, "uEnv-octo.txt")
+shutil.copy(FIXTURE, octo)
+rc, out, err = run("enable", "hub75-octo", env={"PRUKIT_UENV": octo})
+check(rc == 1 and "PRUKIT-HUB75-OCTOSCROLLER-00A0 needs pins" in err and
+      "hdmi-video" in err and "disable_uboot_overlay_video=1" in err and
+      "hdmi-audio" in err and "disable_uboot_overlay_audio=1" in err and
+      "emmc" not in err and "cape-universal" in err and text(octo) == orig,
+      "enable hub75-octo (a unique prefix) with HDMI and cape universal on: refused, names "
+      "HDMI video and audio, not the eMMC, file unchanged", err)
+rc, out, err = run("enable", "hub75-octoscroller", "--free-pins", env={"PRUKIT_UENV": octo})
+u = text(octo).splitlines()
+line = "uboot_overlay_addr4=%s/PRUKIT-HUB75-OCTOSCROLLER-00A0.dtbo" % fw
+check(rc == 0 and line in u and u[u.index(line) - 1] == "#prukit: PRUKIT-HUB75-OCTOSCROLLER-00A0"
+      and "disable_uboot_overlay_video=1" in u and "disable_uboot_overlay_audio=1" in u and
+      "disable_uboot_overlay_emmc=1" not in u and "enable_uboot_cape_universal=1" not in u,
+      "enable hub75-octoscroller --free-pins: addr4, HDMI video and audio off, cape universal "
+      "turned off, the eMMC kept", out + err + "\n".join(u))
+rc, out, err = run("overlays", env={"PRUKIT_UENV": octo})
+mine = [ln for ln in out.splitlines() if "PRUKIT-HUB75-OCTOSCROLLER-00A0" in ln]
+check(rc == 0 and len(mine) == 1 and mine[0].startswith("*") and "PRU0, pins " in mine[0] and
+      "and 53 more" in mine[0] and "(for the" not in mine[0],
+      "overlays: hub75-octoscroller enabled, on PRU0, 57 pads", out + err)
+rc, out, err = run("disable", "hub75-octoscroller", env={"PRUKIT_UENV": octo})
+check(rc == 0 and text(octo) == orig,
+      "disable hub75-octoscroller: the file is byte for byte BeagleBoard's again", out + err)
+
 with open(os.path.join(dtdir, "model"), "w") as f:
     f.write("TI AM335x PocketBeagle\0")
 pocket = os.path.join(tmp, "uEnv-pocket.txt")
@@ -126,6 +160,11 @@ check(rc == 0 and "uboot_overlay_addr4=%s/PRUKIT-WS281X-00A0.dtbo" % fw in u and
 rc, out, err = run("enable", "hub75", env={"PRUKIT_UENV": pocket})
 check(rc == 1 and "use PRUKIT-HUB75-POCKETSCROLLER-00A0 instead" in err,
       "enable of the Black's hub75 on a PocketBeagle: refused, names the PocketScroller's", err)
+rc, out, err = run("enable", "hub75-octoscroller", env={"PRUKIT_UENV": pocket})
+check(rc == 1 and "PRUKIT-HUB75-OCTOSCROLLER-00A0 is made for the BeagleBone Black" in err and
+      "use PRUKIT-HUB75-POCKETSCROLLER-00A0 instead" in err,
+      "enable of the Octoscroller's overlay on a PocketBeagle: refused, names the "
+      "PocketScroller's", err)
 with open(os.path.join(dtdir, "model"), "w") as f:
     f.write("TI AM335x BeagleBone Black\0")
 

@@ -16,6 +16,9 @@
  */
 void hub75_scan(volatile struct hub75_ctrl *c, uint32_t command);
 
+/* The same with every line on GPIO banks (HUB75_DATA_BANKS, hub75_banks.S) */
+void hub75_scan_banks(volatile struct hub75_ctrl *c, uint32_t command);
+
 #endif /* __ASSEMBLER__ */
 
 #endif /* _HUB75_FW_H */

@@ -32,6 +32,9 @@ CTRL_AT(show, HUB75_CTRL_SHOW);
 CTRL_AT(refreshes, HUB75_CTRL_REFRESHES);
 CTRL_AT(refresh_cycles, HUB75_CTRL_REFRESH_CYCLES);
 CTRL_AT(init, HUB75_CTRL_INIT);
+CTRL_AT(bank_addr, HUB75_CTRL_BANK_ADDR);
+CTRL_AT(bank_mask, HUB75_CTRL_BANK_MASK);
+CTRL_AT(bank_used, HUB75_CTRL_BANK_USED);
 static_assert(sizeof(struct hub75_ctrl) == HUB75_CTRL_SIZE, "hub75_scan.S: ctrl layout");
 
 /* The image initialises the header: the driver checks it right after loading. */
@@ -60,10 +63,47 @@ static int gpio_bank_ok(uint32_t base)
 	return 0;
 }
 
-/* Clocks in a row, as the refresh does: HUB75_DATA_GPIO has 2 bytes a clock */
+/* Clocks in a row, as the refresh does: the bytes of an entry */
 static uint32_t row_clocks(volatile struct hub75_ctrl *c)
 {
-	return c->data_mode == HUB75_DATA_GPIO ? c->row_bytes / 2u : c->row_bytes;
+	switch (c->data_mode) {
+	case HUB75_DATA_GPIO:
+		return c->row_bytes / 2u;
+	case HUB75_DATA_BANKS:
+		return c->row_bytes / (4u * HUB75_BANK_SLOTS);
+	}
+	return c->row_bytes;
+}
+
+/*
+ * HUB75_DATA_BANKS: known banks, slot 3 the control bank with the clock in
+ * its mask, the control lines in none of the masks but the clock, rows of
+ * whole chunks (four entries), the row addresses within the address lines.
+ */
+static uint32_t check_banks(volatile struct hub75_ctrl *c)
+{
+	uint32_t ctrl = 1u << c->lat_bit | 1u << c->oe_bit | c->addr_mask;
+	uint32_t clk = 1u << c->clk_bit;
+	unsigned int k;
+
+	if (!(c->bank_used & 1u << HUB75_BANK_CTRL_SLOT) || c->bank_used >> HUB75_BANK_SLOTS ||
+	    c->bank_addr[HUB75_BANK_CTRL_SLOT] != c->gpio_base || !gpio_bank_ok(c->gpio_base) ||
+	    !(c->bank_mask[HUB75_BANK_CTRL_SLOT] & clk) ||
+	    c->row_bytes % (16u * HUB75_BANK_SLOTS) || (ctrl & clk))
+		return HUB75_EINVAL;
+	for (k = 0; k < HUB75_BANK_SLOTS; k++) {
+		uint32_t mine = k == HUB75_BANK_CTRL_SLOT ? clk : 0;
+
+		if (!(c->bank_used & 1u << k))
+			continue;
+		if (!gpio_bank_ok(c->bank_addr[k]) || !c->bank_mask[k] ||
+		    (c->bank_addr[k] == c->gpio_base && (c->bank_mask[k] & ~mine & (ctrl | clk))))
+			return HUB75_EINVAL;
+	}
+	for (k = 0; k < c->rows; k++)
+		if (c->row_addr[k] & ~c->addr_mask)
+			return HUB75_EINVAL;
+	return HUB75_OK;
 }
 
 static uint32_t check_init(volatile struct hub75_ctrl *c)
@@ -102,6 +142,8 @@ static uint32_t check_start(volatile struct hub75_ctrl *c)
 		if (!gpio_bank_ok(c->gpio_base) || !c->gpio_mask || c->gpio_shift > 31)
 			return HUB75_EINVAL;
 		return HUB75_OK;
+	case HUB75_DATA_BANKS:
+		return check_banks(c);
 	}
 	return HUB75_EINVAL;
 }
@@ -162,6 +204,46 @@ static void send_init(volatile struct hub75_ctrl *c)
 	}
 }
 
+/* HUB75_DATA_BANKS: @bits of bank @base high or low */
+static void bank_write(uint32_t base, uint32_t bits, int high)
+{
+	volatile uint32_t *bank = (volatile uint32_t *)base;
+
+	bank[(high ? HUB75_GPIO_SETDATAOUT : HUB75_GPIO_CLEARDATAOUT) / 4] = bits;
+}
+
+/*
+ * send_init() with every line on GPIO banks: the same words, the data
+ * lines of every used slot (but the clock) together.  The L4 path keeps
+ * the writes in order, each landing after the one before.
+ */
+static void send_init_banks(volatile struct hub75_ctrl *c)
+{
+	uint32_t clk = 1u << c->clk_bit, lat = 1u << c->lat_bit, base = c->gpio_base;
+	uint32_t n = row_clocks(c), i;
+	unsigned int k, s;
+
+	bank_write(base, 1u << c->oe_bit, 1);
+	bank_write(base, clk | lat | (c->addr_mask & ~c->row_addr[1 % c->rows]), 0);
+	bank_write(base, c->row_addr[1 % c->rows] & c->addr_mask, 1);
+	for (k = 0; k < HUB75_MAX_INIT && c->init[k]; k++) {
+		uint32_t word = HUB75_INIT_WORD(c->init[k]);
+		uint32_t from = n - HUB75_INIT_LATCH(c->init[k]);
+
+		for (i = 0; i < n; i++) {
+			if (i == from)
+				bank_write(base, lat, 1);
+			for (s = 0; s < HUB75_BANK_SLOTS; s++)
+				if (c->bank_used & 1u << s)
+					bank_write(c->bank_addr[s], c->bank_mask[s] & ~clk,
+						   word >> (15 - i % 16) & 1);
+			bank_write(base, clk, 1);
+			bank_write(base, clk, 0);
+		}
+		bank_write(base, lat, 0);
+	}
+}
+
 int main(void)
 {
 	volatile struct hub75_ctrl *c = &hub75_ctrl;
@@ -190,9 +272,14 @@ int main(void)
 			c->refreshes = 0;
 			c->refresh_cycles = 0;
 			answer(c, seq, HUB75_OK);
-			send_init(c);
 			/* returns on the next command, which this loop then takes */
-			hub75_scan(c, cmd);
+			if (c->data_mode == HUB75_DATA_BANKS) {
+				send_init_banks(c);
+				hub75_scan_banks(c, cmd);
+			} else {
+				send_init(c);
+				hub75_scan(c, cmd);
+			}
 			break;
 		case HUB75_CMD_STOP:
 			/* R30 is 0 from the core's start: OE low, lit */
@@ -200,7 +287,10 @@ int main(void)
 				answer(c, seq, HUB75_EINVAL);
 				break;
 			}
-			write_r30(read_r30() | 1u << c->oe_bit);
+			if (c->data_mode == HUB75_DATA_BANKS && gpio_bank_ok(c->gpio_base))
+				bank_write(c->gpio_base, 1u << c->oe_bit, 1);
+			else
+				write_r30(read_r30() | 1u << c->oe_bit);
 			answer(c, seq, HUB75_OK);
 			break;
 		default:

@@ -170,3 +170,48 @@ def seen(decoded, name, panel_w, width, h):
             row.append(tuple(decoded[my][c * panel_w * s + mx]))
         out.append(row)
     return out
+
+
+# The Octoscroller cape (PRUKIT-HUB75-OCTOSCROLLER-00A0): (bank, bit) of
+# R1 G1 B1 R2 G2 B2 of outputs 1..8 and of the control lines, all GPIO
+# (LEDscape's Octoscroller schematic, cross-checked with the BeagleBone's
+# pin table)
+OCTO_DATA = [
+    [(2, 2), (2, 3), (2, 5), (0, 23), (2, 4), (0, 26)],
+    [(0, 27), (2, 1), (0, 22), (2, 22), (2, 23), (2, 24)],
+    [(0, 30), (1, 18), (0, 31), (1, 16), (0, 3), (0, 5)],
+    [(0, 2), (0, 15), (1, 17), (3, 21), (3, 19), (0, 4)],
+    [(2, 25), (0, 11), (0, 10), (0, 9), (0, 8), (2, 17)],
+    [(2, 16), (2, 15), (2, 14), (2, 13), (2, 10), (2, 12)],
+    [(2, 11), (2, 9), (2, 8), (2, 6), (0, 7), (2, 7)],
+    [(3, 17), (3, 16), (3, 15), (3, 14), (0, 14), (0, 20)],
+]
+OCTO_CTRL = dict(bank=1, clk=19, lat=28, oe=29, addr=[12, 13, 14, 15])
+
+
+def bank_slots(data, ctrl_bank):
+    """hub75_proto.h's slots: the data banks but the control bank, in
+    order, at the end of slots 0..2; the control bank in slot 3; None for
+    a slot not used."""
+    banks = sorted({b for lines in data for b, _ in lines} - {ctrl_bank})
+    return [None] * (3 - len(banks)) + banks + [ctrl_bank]
+
+
+def banks_frame(data, slots, imgs, rows, planes):
+    """The frame buffer of HUB75_DATA_BANKS: per plane shown, row, clock:
+    four 32-bit words, the data bits set in each slot's bank.  DATA[o] the
+    (bank, bit) of output o's six lines, IMGS[o] its picture of levels as
+    driven (2 * rows high)."""
+    out = bytearray()
+    width = len(imgs[0][0])
+    for p in plane_order(planes):
+        for r in range(rows):
+            for x in range(width):
+                words = [0, 0, 0, 0]
+                for o, lines in enumerate(data):
+                    lv = tuple(imgs[o][r][x]) + tuple(imgs[o][r + rows][x])
+                    for c, (bank, bit) in enumerate(lines):
+                        if lv[c] >> p & 1:
+                            words[slots.index(bank)] |= 1 << bit
+                out += struct.pack("<4I", *words)
+    return bytes(out)

@@ -7,7 +7,7 @@ should show (hub75_model.py)."""
 import importlib.util
 import os
 
-from hub75_model import expected, plane_order, seen
+from hub75_model import OCTO_CTRL, OCTO_DATA, expected, plane_order, seen
 
 TOP = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../.."))
 spec = importlib.util.spec_from_file_location("hub75_decode", TOP + "/tools/hub75-decode.py")
@@ -20,11 +20,25 @@ def stretch(m):
     return 1 if m.get("mux", "direct") == "direct" else 2
 
 
-def decoder(art, m):
-    """(dropped records, the decoder of the panels as driven)"""
+def octo_pinmap(o, scan):
+    """The pins of output O of the Octoscroller (hub75_model.OCTO_*)."""
+    c = OCTO_CTRL
+    pm = {sig: hd.gpio(b, bit) for sig, (b, bit) in zip(hd.DATA, OCTO_DATA[o])}
+    pm.update(clk=hd.gpio(c["bank"], c["clk"]), lat=hd.gpio(c["bank"], c["lat"]),
+              oe=hd.gpio(c["bank"], c["oe"]))
+    lines = scan.bit_length() - 1
+    pm.update({s: hd.gpio(c["bank"], b) for s, b in zip(hd.ADDR, c["addr"][:lines])})
+    return pm
+
+
+def decoder(art, m, output=0):
+    """(dropped records, the decoder of the panels as driven on OUTPUT)"""
     _, dropped, events, end = hd.read_trace(os.path.join(art, m["name"] + ".trace"),
                                             with_end=True)
-    pinmap = dict(hd.MAPS[m["map"]])
+    if m["map"] == "octoscroller":
+        pinmap = octo_pinmap(output, m["scan"])
+    else:
+        pinmap = dict(hd.MAPS[m["map"]])
     if m["scan"] < 32:
         pinmap.pop("e", None)
     return dropped, hd.Decoder(events, pinmap, m["width"] * stretch(m), 2 * m["scan"], m["scan"],
@@ -58,9 +72,25 @@ def check_start(art, m, check):
 def check_picture(art, m, check):
     """Decode picture M (an entry of hub75.json) from ART/M["name"].trace
     and check it with CHECK(name, condition, detail); the decoded levels of
-    its first whole refresh, or None."""
-    name = m["name"]
-    dropped, dec = decoder(art, m)
+    its first whole refresh, or None.  With M["outputs"], each output's
+    band of the picture from its own pins, the levels one under the other."""
+    outputs = m.get("outputs", 1)
+    if outputs == 1:
+        return check_output(art, m, check, 0)
+    band = m["height"] // outputs
+    levels = []
+    for o in range(outputs):
+        got = check_output(art, dict(m, height=band, band=o), check, o)
+        if got is None:
+            return None
+        levels += got
+    return levels
+
+
+def check_output(art, m, check, output):
+    """check_picture() of one output (M["band"]: its band of the picture)."""
+    name = m["name"] + (" output %d" % (output + 1) if "band" in m else "")
+    dropped, dec = decoder(art, m, output)
     check("%s: the trace is whole (no records dropped)" % name, not dropped, dropped)
     pulses = dec.oe_pulses()
     if m["image"] is None:
@@ -99,7 +129,7 @@ def check_picture(art, m, check):
           % (name, t1 - t0, 200e6 / (t1 - t0)), t1 - t0 == m["refresh"],
           "trace %d, driver %d" % (t1 - t0, m["refresh"]))
     clk = dec.clock_stats(t0, t1)
-    want_clk = 16 if m["map"] == "pocketscroller" else 10
+    want_clk = {"pocketscroller": 16, "octoscroller": 72}.get(m["map"], 10)
     check("%s: pixel clock %.1f MHz" % (name, 200 / want_clk), clk["min_period"] == want_clk,
           clk["min_period"])
     levels, dev = hd.to_levels(res["on"], lsb)
@@ -107,7 +137,12 @@ def check_picture(art, m, check):
                   m["height"])
     with open(os.path.join(art, m["image"]), "rb") as f:
         data = f.read()
-    want = expected(data, m["format"], m["width"], m["height"], planes, m["correction"])
+    if "band" in m:		# the output's band of the whole picture
+        full = m["height"] * m.get("outputs", 1)
+        want = expected(data, m["format"], m["width"], full, planes, m["correction"])
+        want = want[m["band"] * m["height"]:(m["band"] + 1) * m["height"]]
+    else:
+        want = expected(data, m["format"], m["width"], m["height"], planes, m["correction"])
     bad = [(x, y) for y in range(m["height"]) for x in range(m["width"])
            if tuple(levels[y][x]) != want[y][x]]
     check("%s: every pixel shows the picture's levels exactly (%dx%d, %d planes, %s%s)"

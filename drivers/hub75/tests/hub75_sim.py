@@ -235,6 +235,123 @@ def bad_start(prusim, fw, work):
           res and "0x%x" % res[0]["status"])
 
 
+OCTO_DATA, OCTO_CTRL = hub75_model.OCTO_DATA, hub75_model.OCTO_CTRL
+GPIO_BASE = [0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000]
+
+
+def octo_slots(outputs):
+    return hub75_model.bank_slots(OCTO_DATA[:outputs], OCTO_CTRL["bank"])
+
+
+def banks_frame(outputs, imgs, rows, planes, slots):
+    return hub75_model.banks_frame(OCTO_DATA[:outputs], slots, imgs, rows, planes)
+
+
+def banks_ctrl(outputs, rows, planes, row_bytes, oe, bufs, slots, init=()):
+    c = OCTO_CTRL
+    addr_lines = rows.bit_length() - 1
+    addr = c["addr"][:addr_lines]
+    row_addr = [sum(1 << addr[i] for i in range(addr_lines) if r >> i & 1) for r in range(32)]
+    masks = [0, 0, 0, 0]
+    for o in range(outputs):
+        for bank, bit in OCTO_DATA[o]:
+            masks[slots.index(bank)] |= 1 << bit
+    masks[3] |= 1 << c["clk"]
+    used = sum(1 << k for k in range(4) if slots[k] is not None)
+    hdr = struct.pack("<IHHII", MAGIC, VERSION, CTRL_SIZE, START | 1 << 16, 0)
+    body = struct.pack("<2I3IHH8B", bufs[0], bufs[1], GPIO_BASE[c["bank"]], 0,
+                       sum(1 << a for a in addr), row_bytes, rows, 2, planes, c["clk"],
+                       c["lat"], c["oe"], 0, 0, 0)
+    oe = list(oe) + [0] * (MAX_PLANES - len(oe))
+    init = [w | n << 16 for w, n in init] + [0] * (4 - len(init))
+    return hdr + body + struct.pack("<32I", *row_addr) + struct.pack("<12I", *oe) + \
+        struct.pack("<4I", 0, 0, 0, 0) + struct.pack("<4I", *init) + \
+        struct.pack("<4I", *[GPIO_BASE[b] if b is not None else 0 for b in slots]) + \
+        struct.pack("<4I", *masks) + struct.pack("<B3x", used)
+
+
+def octo_pinmap(o):
+    pm = {sig: hd.gpio(b, bit) for sig, (b, bit) in zip(hd.DATA, OCTO_DATA[o])}
+    c = OCTO_CTRL
+    pm.update(clk=hd.gpio(c["bank"], c["clk"]), lat=hd.gpio(c["bank"], c["lat"]),
+              oe=hd.gpio(c["bank"], c["oe"]))
+    pm.update({s: hd.gpio(c["bank"], b) for s, b in zip(hd.ADDR, c["addr"])})
+    return pm
+
+
+def banks_case(prusim, fw, work, name, outputs, width, scan, planes, lsb, init=()):
+    """The firmware on the Octoscroller's pins: OUTPUTS chains WIDTH wide,
+    every output's picture decoded from its own pins."""
+    rows, height = scan, 2 * scan
+    slots = octo_slots(outputs)
+    imgs = [image(width, height, planes, 3 + o) for o in range(outputs)]
+    fb = banks_frame(outputs, imgs, rows, planes, slots)
+    row_bytes = width * 16
+    order = plane_order(planes)
+    oe = [lsb << p for p in order]
+    words = 2 * sum(1 for b in slots if b is not None) + 1
+    est = rows * (planes * (width * words * 8 + width // 4 * 60 + 120) + sum(oe))
+    cycles = int(est * 2.3) + 5000 + len(init) * width * 200 * words
+    with open(work + "/ctrl.bin", "wb") as f:
+        f.write(banks_ctrl(outputs, rows, planes, row_bytes, oe, [DDR, DDR + len(fb)], slots,
+                           init))
+    with open(work + "/ddr.bin", "wb") as f:
+        f.write(fb + fb)
+    r = subprocess.run([prusim, "--pru0", "%s/hub75-pru0.elf" % fw, "--ddr",
+                        "0x%x" % max(2 * len(fb), 0x10000),
+                        "--load", "pru0:0x8:%s/ctrl.bin" % work,
+                        "--load", "0x%x:%s/ddr.bin" % (DDR, work),
+                        "--max-cycles", str(cycles),
+                        "--dump", "pru0:0x8:%d:%s/out.bin" % (CTRL_SIZE, work),
+                        "--trace-out", work + "/trace.bin"], capture_output=True, text=True)
+    if not check("%s: prusim ran" % name, r.returncode == 0, r.stderr[-300:]):
+        return None
+    with open(work + "/out.bin", "rb") as f:
+        out = f.read()
+    status, = struct.unpack_from("<I", out, 12)
+    nref, rcyc = struct.unpack_from("<2I", out, 232)
+    check("%s: START answered OK" % name, status == (1 << 16 | 0x8000), "0x%x" % status)
+    _, _, events = hd.read_trace(work + "/trace.bin")
+    result = None
+    for o in range(outputs):
+        dec = hd.Decoder(events, octo_pinmap(o), width, height, scan, initial={"oe": 1},
+                         panel="fm6126a" if init else "generic")
+        got = decode_refresh(dec, rows, planes, 1)
+        if not check("%s, output %d: two refreshes in the trace" % (name, o + 1),
+                     got is not None, "%d pulses" % len(dec.oe_pulses())):
+            return None
+        t0, t1, pulses, integ = got
+        levels, dev = hd.to_levels(integ["on"], lsb)
+        bad = [(x, y) for y in range(height) for x in range(width)
+               if tuple(levels[y][x]) != tuple(imgs[o][y][x])]
+        check("%s, output %d: every pixel's levels exact" % (name, o + 1), not bad and dev == 0,
+              "%d differ, first %s: got %s want %s" % (
+                  len(bad), bad[:1], bad and levels[bad[0][1]][bad[0][0]],
+                  bad and imgs[o][bad[0][1]][bad[0][0]]) if bad else "%d pixels" % (width * height))
+        faults = {k: integ[k] for k in ("setup_violations", "clk_while_lat", "ghosting",
+                                        "clk_while_lit", "oe_coincident", "bad_address")}
+        check("%s, output %d: no change while lit, no data change on a clock edge"
+              % (name, o + 1), not any(faults.values()), str(faults))
+        if init:
+            regs = dec.registers()
+            want = [(n, {line: [w] * (width // 16) for line in hd.DATA}) for w, n in init]
+            lit = [p for p in dec.oe_pulses() if p[0] > 0]
+            check("%s, output %d: the register words on every line, before a row is lit"
+                  % (name, o + 1), [(n, w) for _, n, w in regs] == want and lit and
+                  regs[-1][0] < lit[0][0], [(n, sorted(set(w["r1"]))) for _, n, w in regs])
+        if o == 0:
+            hist = {}
+            for s_, e, a in pulses:
+                hist[e - s_] = hist.get(e - s_, 0) + 1
+            check("%s: each plane lit exactly lsb << plane cycles, per row" % name,
+                  hist == {t: scan for t in oe}, str(sorted(hist.items())))
+            check("%s: refresh length in the trace = @refresh_cycles" % name,
+                  nref >= 2 and t1 - t0 == rcyc, "trace %d, firmware %d" % (t1 - t0, rcyc))
+            result = dict(refresh=t1 - t0, clk=dec.clock_stats(t0, t1),
+                          lit=sum(e - s_ for s_, e, a in pulses), lsb=lsb, words=words)
+    return result
+
+
 def main():
     prusim, fw, work = sys.argv[1:4]
     bench = "--bench" in sys.argv
@@ -262,6 +379,10 @@ def main():
                          128, 32, 8, 8, 26, panel=dict(mux="stripe", panel_w=64))
     r["12bit"] = case(prusim, fw, work, "64x32 12 planes, LSB 1 cycle (5 ns)", BONE, 64, 32, 16,
                       12, 1)
+    r["octo8"] = banks_case(prusim, fw, work, "Octoscroller 8 outputs x 64x32, 8 planes", 8, 64,
+                            16, 8, 26)
+    r["octo1-fm"] = banks_case(prusim, fw, work, "Octoscroller output 1, FM6126A chain of 2", 1,
+                               128, 16, 6, 16, init=[(0x7FFF, 11), (0x0040, 12)])
     bad_start(prusim, fw, work)
     for k, period in (("bone", 10), ("33mhz", 6), ("pocket", 16)):
         if r[k]:

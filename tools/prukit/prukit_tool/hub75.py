@@ -180,8 +180,9 @@ def register(sub):
         "`pngtopnm`.  The picture stays shown after the command ends (with "
         "--seconds, it is cleared after that time).",
         epilog="The matrix comes from the overlay %s (or "
-        "PRUKIT-HUB75-POCKETSCROLLER-00A0) and the module hub75; /dev/fbN is group "
-        "%s's.  Documentation/hub75.rst." % (OVERLAY, GROUP))
+        "PRUKIT-HUB75-POCKETSCROLLER-00A0, PRUKIT-HUB75-OCTOSCROLLER-00A0) and the "
+        "module hub75; /dev/fbN is group %s's.  Documentation/hub75.rst."
+        % (OVERLAY, GROUP))
     what = p.add_mutually_exclusive_group(required=True)
     what.add_argument("--text", metavar="TEXT", help="the text to draw (ASCII)")
     what.add_argument("--image", metavar="FILE",
@@ -224,7 +225,8 @@ def _driver_of(path):
 
 
 def missing_hint():
-    return ("The matrix comes from the overlay %s (or PRUKIT-HUB75-POCKETSCROLLER-00A0):\n"
+    return ("The matrix comes from the overlay %s (or PRUKIT-HUB75-POCKETSCROLLER-00A0,\n"
+            "PRUKIT-HUB75-OCTOSCROLLER-00A0):\n"
             "  sudo prukit enable %s\n"
             "then reboot.  If the overlay is enabled, the module may not be loaded:\n"
             "  sudo modprobe hub75\n"

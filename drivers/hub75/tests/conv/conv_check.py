@@ -79,7 +79,35 @@ def main(conv, work):
         check("frame buffer: %s, then rectangle (%d,%d)-(%d,%d) changed" % (name, x1, y1, x2, y2),
               got == want)
     mux_checks(conv, work)
+    banks_checks(conv, work)
     return 1 if FAILS else 0
+
+
+def banks_checks(conv, work):
+    """HUB75_DATA_BANKS: the Octoscroller's outputs, each a band of the
+    display's rows, against hub75_model.banks_frame()."""
+    data = hub75_model.OCTO_DATA
+    for name, outputs, pw, ph, chain, planes, corr, mux in (
+            ("8 outputs x 64x32, 8 planes", 8, 64, 32, 1, 8, "cie1931", "direct"),
+            ("3 outputs x 2 32x16 outdoor (stripe), 12 planes", 3, 32, 16, 2, 12, "linear",
+             "stripe"),
+            ("8 outputs x 3 64x32 (the 24-panel wall), 12 planes", 8, 64, 32, 3, 12, "cie1931",
+             "direct")):
+        slots = hub75_model.bank_slots(data[:outputs], hub75_model.OCTO_CTRL["bank"])
+        lines = ",".join("%d:%d" % (slots.index(b), bit) for o in data[:outputs] for b, bit in o)
+        w, h = pw * chain, ph * outputs
+        a = image(w, h, "xrgb8888", outputs * 10 + chain)
+        pa = os.path.join(work, "a.raw")
+        with open(pa, "wb") as f:
+            f.write(a)
+        got = subprocess.run([conv, "banks", str(planes), corr, str(pw), str(ph), str(chain),
+                              str(outputs), mux, lines, pa], capture_output=True).stdout
+        img = hub75_model.expected(a, "XRGB8888", w, h, planes, corr)
+        rows = ph // (1 if mux == "direct" else 2) // 2
+        imgs = [hub75_model.driven(img[o * ph:(o + 1) * ph], mux, pw) for o in range(outputs)]
+        want = hub75_model.banks_frame(data[:outputs], slots, imgs, rows, planes)
+        check("frame buffer, every line on GPIO banks: %s" % name, got == want,
+              "%d/%d bytes" % (len(got), len(want)))
 
 
 def mux_checks(conv, work):

@@ -15,6 +15,13 @@
  *   conv_test mux NAME PANEL_WIDTH PANEL_HEIGHT CHAIN
  *	hub75_mux_table(): "bad" or per position as driven, the "x y" of
  *	the pixel it lights, one per line
+ *   conv_test banks PLANES CORR PANEL_W PANEL_H CHAIN OUTPUTS MUX LINES A
+ *	HUB75_DATA_BANKS: the frame buffer of image A (XRGB8888, PANEL_W *
+ *	CHAIN x PANEL_H * OUTPUTS), LINES "slot:bit,..." for the six lines of
+ *	each output in turn; written to stdout
+ *   conv_test bench-banks N
+ *	N conversions of the Octoscroller's wall, 8 outputs of 3 64x32
+ *	panels (192x256), 12 planes, CIE 1931
  *   conv_test bench N
  *	N conversions of a whole 64x32 XRGB8888 frame, 8 planes, CIE 1931
  *	(callgrind counts hub75_convert()'s instructions)
@@ -24,6 +31,10 @@
 #include <string.h>
 
 #include "../../hub75_conv.h"
+
+#ifndef ARRAY_SIZE
+#define ARRAY_SIZE(a)	(sizeof(a) / sizeof((a)[0]))
+#endif
 
 static void *slurp(const char *path, size_t want)
 {
@@ -63,11 +74,48 @@ static u32 *mux_table(enum hub75_mux mux, unsigned int w, unsigned int h, unsign
 {
 	u32 *table = malloc(sizeof(*table) * w * h * chain);
 
-	if (!table || !hub75_mux_table(mux, w, h, chain, table)) {
+	if (!table || !hub75_mux_table(mux, w, h, chain, 1, table)) {
 		free(table);
 		return NULL;
 	}
 	return table;
+}
+
+/* A HUB75_DATA_BANKS layout; false if the wiring does not fit */
+static bool banks_layout(struct hub75_layout *l, unsigned int planes,
+			 enum hub75_correction c, unsigned int pw, unsigned int ph,
+			 unsigned int chain, unsigned int outputs, enum hub75_mux mux,
+			 const char *lines)
+{
+	unsigned int o, k, s = hub75_mux_stretch(mux);
+	u32 *table = malloc(sizeof(*table) * pw * chain * ph * outputs);
+
+	if (!table || !hub75_mux_table(mux, pw, ph, chain, outputs, table)) {
+		free(table);
+		return false;
+	}
+	*l = (struct hub75_layout){ .width = pw * chain, .height = ph * outputs,
+		.clocks = pw * chain * s, .rows = ph / s / 2, .planes = planes,
+		.entry_bytes = 16, .outputs = outputs, .mux = table };
+	l->row_bytes = l->clocks * 16;
+	for (o = 0; o < outputs; o++) {
+		for (k = 0; k < HUB75_LINES; k++) {
+			unsigned int slot, bit;
+			int n;
+
+			if (sscanf(lines, "%u:%u%n", &slot, &bit, &n) != 2 || slot > 3 ||
+			    bit > 31) {
+				fprintf(stderr, "conv_test: bad lines at %s\n", lines);
+				exit(2);
+			}
+			l->bank_slot[o][k] = slot;
+			l->bank_bit[o][k] = bit;
+			lines += n + (lines[n] == ',');
+		}
+	}
+	hub75_layout_lut(l, c);
+	hub75_layout_finish(l);
+	return true;
 }
 
 int main(int argc, char **argv)
@@ -106,6 +154,59 @@ int main(int argc, char **argv)
 			hub75_convert(&l, buf, img, 64 * 4, HUB75_XRGB8888, &all);
 		printf("%u\n", buf[i % hub75_buffer_size(&l)]);
 		free(buf);
+		return 0;
+	}
+	if (argc == 11 && !strcmp(argv[1], "banks")) {
+		unsigned int pw = atoi(argv[4]), ph = atoi(argv[5]), chain = atoi(argv[6]);
+		unsigned int outputs = atoi(argv[7]);
+
+		if (outputs < 1 || outputs > HUB75_MAX_OUTPUTS ||
+		    !banks_layout(&l, atoi(argv[2]), corr(argv[3]), pw, ph, chain, outputs,
+				  mux_of(argv[8]), argv[9])) {
+			fprintf(stderr, "conv_test: the layout does not fit\n");
+			return 2;
+		}
+		a = slurp(argv[10], (size_t)l.width * l.height * 4);
+		buf = calloc(1, hub75_buffer_size(&l));
+		all = (struct hub75_rect){ 0, 0, l.width, l.height };
+		hub75_convert(&l, buf, a, l.width * 4, HUB75_XRGB8888, &all);
+		fwrite(buf, 1, hub75_buffer_size(&l), stdout);
+		free(buf);
+		free(a);
+		free((void *)l.mux);
+		return 0;
+	}
+	if (argc == 3 && !strcmp(argv[1], "bench-banks")) {
+		/* the Octoscroller's lines: slots 0..3 are GPIO banks 0, 2, 3 and 1 */
+		static const u8 octo[HUB75_MAX_OUTPUTS * HUB75_LINES][2] = {
+			{ 1, 2 }, { 1, 3 }, { 1, 5 }, { 0, 23 }, { 1, 4 }, { 0, 26 },
+			{ 0, 27 }, { 1, 1 }, { 0, 22 }, { 1, 22 }, { 1, 23 }, { 1, 24 },
+			{ 0, 30 }, { 3, 18 }, { 0, 31 }, { 3, 16 }, { 0, 3 }, { 0, 5 },
+			{ 0, 2 }, { 0, 15 }, { 3, 17 }, { 2, 21 }, { 2, 19 }, { 0, 4 },
+			{ 1, 25 }, { 0, 11 }, { 0, 10 }, { 0, 9 }, { 0, 8 }, { 1, 17 },
+			{ 1, 16 }, { 1, 15 }, { 1, 14 }, { 1, 13 }, { 1, 10 }, { 1, 12 },
+			{ 1, 11 }, { 1, 9 }, { 1, 8 }, { 1, 6 }, { 0, 7 }, { 1, 7 },
+			{ 2, 17 }, { 2, 16 }, { 2, 15 }, { 2, 14 }, { 0, 14 }, { 0, 20 },
+		};
+		char lines[sizeof(octo) / 2 * 6], *at = lines;
+
+		for (i = 0; i < ARRAY_SIZE(octo); i++)
+			at += sprintf(at, "%s%u:%u", i ? "," : "", octo[i][0], octo[i][1]);
+		unsigned int n = atoi(argv[2]);
+		u32 *img;
+
+		banks_layout(&l, 12, HUB75_CIE1931, 64, 32, 3, 8, HUB75_MUX_DIRECT, lines);
+		img = malloc((size_t)l.width * l.height * 4);
+		for (i = 0; i < l.width * l.height; i++)
+			img[i] = i * 2654435761u;
+		buf = calloc(1, hub75_buffer_size(&l));
+		all = (struct hub75_rect){ 0, 0, l.width, l.height };
+		for (i = 0; i < n; i++)
+			hub75_convert(&l, buf, img, l.width * 4, HUB75_XRGB8888, &all);
+		printf("%u\n", buf[i % hub75_buffer_size(&l)]);
+		free(buf);
+		free(img);
+		free((void *)l.mux);
 		return 0;
 	}
 	if (argc == 6 && !strcmp(argv[1], "mux")) {
