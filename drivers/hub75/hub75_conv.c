@@ -263,6 +263,55 @@ bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int 
 	return true;
 }
 
+/**
+ * hub75_arrange() - the outputs' chains as the wall is built
+ * @table: a hub75_mux_table(), its pixels those of the chains one under
+ *	the other (@width x @height)
+ * @n: its entries
+ * @width: a chain's width
+ * @height: the outputs' bands together
+ * @band: a band's height (a panel's)
+ * @serpentine: the chains of outputs 2, 4, ... run right to left, their
+ *	panels upside down (the cable snakes back at the end of each row)
+ * @rotation: 0, 90, 180 or 270: the picture turned that far clockwise
+ *	onto the wall (90 and 270: the display is @height wide, @width high)
+ *
+ * Pixel (x, y) of the chains becomes, after @serpentine flipped it in its
+ * band, (h - 1 - y, x) at 90, (w - 1 - x, h - 1 - y) at 180, (y, w - 1 - x)
+ * at 270 (w, h: @width, @height).
+ */
+void hub75_arrange(u32 *table, size_t n, unsigned int width, unsigned int height,
+		   unsigned int band, bool serpentine, unsigned int rotation)
+{
+	size_t i;
+
+	for (i = 0; i < n; i++) {
+		unsigned int x = table[i] & 0xffff, y = table[i] >> 16, t;
+
+		if (serpentine && y / band % 2) {
+			x = width - 1 - x;
+			y = y / band * band + band - 1 - y % band;
+		}
+		switch (rotation) {
+		case 90:
+			t = x;
+			x = height - 1 - y;
+			y = t;
+			break;
+		case 180:
+			x = width - 1 - x;
+			y = height - 1 - y;
+			break;
+		case 270:
+			t = x;
+			x = y;
+			y = width - 1 - t;
+			break;
+		}
+		table[i] = y << 16 | x;
+	}
+}
+
 static void hub75_put32(u8 *p, u32 v)
 {
 	p[0] = v;

@@ -124,6 +124,8 @@ void hub75_layout_lut(struct hub75_layout *l, enum hub75_correction corr);
 void hub75_layout_finish(struct hub75_layout *l);
 size_t hub75_buffer_size(const struct hub75_layout *l);
 unsigned int hub75_mux_stretch(enum hub75_mux mux);
+void hub75_arrange(u32 *table, size_t n, unsigned int width, unsigned int height,
+		   unsigned int band, bool serpentine, unsigned int rotation);
 bool hub75_mux_table(enum hub75_mux mux, unsigned int panel_width, unsigned int panel_height,
 		     unsigned int chain, unsigned int outputs, u32 *table);
 void hub75_convert(const struct hub75_layout *l, u8 *buf, const void *src,

@@ -867,8 +867,10 @@ static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain, 
 	struct device *dev = h->dev;
 	struct hub75_layout *l = &h->layout;
 	const char *mux = "direct", *type = "generic";
+	u32 *table, rotation = 0;
+	bool serpentine;
 	unsigned int i;
-	u32 *table;
+	size_t n;
 	int m;
 
 	device_property_read_string(dev, "prukit,multiplexing", &mux);
@@ -890,15 +892,24 @@ static int hub75_parse_panel(struct hub75 *h, u32 width, u32 height, u32 chain, 
 				     "a %u-row panel with scan 1/%u and multiplexing %s: the rows must be %u\n",
 				     height, l->rows, mux, 2 * l->rows * hub75_mux_stretch(m));
 	l->clocks = l->width * hub75_mux_stretch(m);
-	/* with every line on GPIO banks the conversion always goes through it */
-	if (m == HUB75_MUX_DIRECT && !banks)
+	device_property_read_u32(dev, "prukit,rotation", &rotation);
+	serpentine = device_property_read_bool(dev, "prukit,serpentine");
+	if (rotation % 90 || rotation > 270)
+		return dev_err_probe(dev, -EINVAL, "\"prukit,rotation\" = %u: 0, 90, 180 or 270\n",
+				     rotation);
+	/* the table; with every line on GPIO banks the conversion always uses it */
+	if (m == HUB75_MUX_DIRECT && !banks && !rotation && !serpentine)
 		return 0;
-	table = hub75_devm_kvcalloc(dev, (size_t)l->width * height * l->outputs, sizeof(*table));
+	n = (size_t)l->width * height * l->outputs;
+	table = hub75_devm_kvcalloc(dev, n, sizeof(*table));
 	if (!table)
 		return -ENOMEM;
 	if (!hub75_mux_table(m, width, height, chain, l->outputs, table))
 		return dev_err_probe(dev, -EINVAL, "multiplexing %s does not fit a %ux%u panel\n",
 				     mux, width, height);
+	hub75_arrange(table, n, l->width, l->height, height, serpentine, rotation);
+	if (rotation == 90 || rotation == 270)
+		swap(l->width, l->height);
 	l->mux = table;
 	return 0;
 }

@@ -6,15 +6,18 @@
 #    (hub75_decode_selftest.py), faults included: the decoder the other
 #    checks trust;
 #  - the firmware (hub75-pru0.elf, hub75-pru1.elf) in the prusim host tool
-#    on eight layouts: every pixel decoded exactly, every lit time, the
-#    refresh lengths, START's checks (hub75_sim.py);
+#    on sixteen layouts (the Octoscroller's 8 outputs of one and of three
+#    panels, FM6126A/FM6127 register words, outdoor panels, 12 planes
+#    among them): every pixel
+#    decoded exactly, every lit time, the refresh lengths, START's checks
+#    (hub75_sim.py);
 #  - the conversion, hub75_conv.c built for the host with AddressSanitizer
 #    and UBSan, against hub75_model.py: every level, frame buffers, partial
 #    updates (tests/conv/conv_check.py).
 # Builds what it needs (prusim, the PRU toolchain, the two images) from a
 # clean clone.  Prints PASS:/FAIL: lines; exits non-zero on any failure.
 #
-# prukit-check-min: 104
+# prukit-check-min: 235
 set -uo pipefail
 # shellcheck source=../../../scripts/lib.sh
 . "$(dirname "$0")/../../../scripts/lib.sh"

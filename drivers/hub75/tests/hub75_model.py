@@ -215,3 +215,19 @@ def banks_frame(data, slots, imgs, rows, planes):
                             words[slots.index(bank)] |= 1 << bit
                 out += struct.pack("<4I", *words)
     return bytes(out)
+
+
+def arrange(x, y, width, height, band, serpentine, rotation):
+    """Where pixel (x, y) of the outputs' chains, one under the other
+    (WIDTH x HEIGHT, bands BAND high), is on the display: with SERPENTINE
+    the bands of outputs 2, 4, ... mirrored both ways, then the picture
+    turned ROTATION degrees clockwise (hub75.rst, "Parallel outputs")."""
+    if serpentine and (y // band) % 2 == 1:
+        x, y = width - 1 - x, (y // band) * band + (band - 1 - y % band)
+    if rotation == 90:
+        return height - 1 - y, x
+    if rotation == 180:
+        return width - 1 - x, height - 1 - y
+    if rotation == 270:
+        return y, width - 1 - x
+    return x, y

@@ -7,7 +7,7 @@ should show (hub75_model.py)."""
 import importlib.util
 import os
 
-from hub75_model import OCTO_CTRL, OCTO_DATA, expected, plane_order, seen
+from hub75_model import OCTO_CTRL, OCTO_DATA, arrange, expected, plane_order, seen
 
 TOP = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../.."))
 spec = importlib.util.spec_from_file_location("hub75_decode", TOP + "/tools/hub75-decode.py")
@@ -73,14 +73,19 @@ def check_picture(art, m, check):
     """Decode picture M (an entry of hub75.json) from ART/M["name"].trace
     and check it with CHECK(name, condition, detail); the decoded levels of
     its first whole refresh, or None.  With M["outputs"], each output's
-    band of the picture from its own pins, the levels one under the other."""
+    band of the chains from its own pins, the levels one under the other
+    (M["serpentine"], M["rotation"]: where the chains' pixels are on the
+    display, M["width"] x M["height"])."""
     outputs = m.get("outputs", 1)
     if outputs == 1:
         return check_output(art, m, check, 0)
-    band = m["height"] // outputs
+    turned = m.get("rotation", 0) in (90, 270)
+    width, height = (m["height"], m["width"]) if turned else (m["width"], m["height"])
+    band = height // outputs
     levels = []
     for o in range(outputs):
-        got = check_output(art, dict(m, height=band, band=o), check, o)
+        got = check_output(art, dict(m, width=width, height=band, band=o,
+                                     display=(m["width"], m["height"])), check, o)
         if got is None:
             return None
         levels += got
@@ -137,10 +142,18 @@ def check_output(art, m, check, output):
                   m["height"])
     with open(os.path.join(art, m["image"]), "rb") as f:
         data = f.read()
-    if "band" in m:		# the output's band of the whole picture
-        full = m["height"] * m.get("outputs", 1)
-        want = expected(data, m["format"], m["width"], full, planes, m["correction"])
-        want = want[m["band"] * m["height"]:(m["band"] + 1) * m["height"]]
+    if "band" in m:		# the output's band of the chains, from the display
+        dw, dh = m["display"]
+        shown = expected(data, m["format"], dw, dh, planes, m["correction"])
+        full = m["height"] * m["outputs"]
+        want = []
+        for y in range(m["band"] * m["height"], (m["band"] + 1) * m["height"]):
+            row = []
+            for x in range(m["width"]):
+                dx, dy = arrange(x, y, m["width"], full, m["height"], m.get("serpentine", False),
+                                 m.get("rotation", 0))
+                row.append(shown[dy][dx])
+            want.append(row)
     else:
         want = expected(data, m["format"], m["width"], m["height"], planes, m["correction"])
     bad = [(x, y) for y in range(m["height"]) for x in range(m["width"])

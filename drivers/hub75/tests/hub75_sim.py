@@ -279,9 +279,11 @@ def octo_pinmap(o):
     return pm
 
 
-def banks_case(prusim, fw, work, name, outputs, width, scan, planes, lsb, init=()):
+def banks_case(prusim, fw, work, name, outputs, width, scan, planes, lsb, init=(),
+               decode=None):
     """The firmware on the Octoscroller's pins: OUTPUTS chains WIDTH wide,
-    every output's picture decoded from its own pins."""
+    every output's picture (or those of DECODE, a list) decoded from its
+    own pins."""
     rows, height = scan, 2 * scan
     slots = octo_slots(outputs)
     imgs = [image(width, height, planes, 3 + o) for o in range(outputs)]
@@ -313,7 +315,7 @@ def banks_case(prusim, fw, work, name, outputs, width, scan, planes, lsb, init=(
     check("%s: START answered OK" % name, status == (1 << 16 | 0x8000), "0x%x" % status)
     _, _, events = hd.read_trace(work + "/trace.bin")
     result = None
-    for o in range(outputs):
+    for o in range(outputs) if decode is None else decode:
         dec = hd.Decoder(events, octo_pinmap(o), width, height, scan, initial={"oe": 1},
                          panel="fm6126a" if init else "generic")
         got = decode_refresh(dec, rows, planes, 1)
@@ -350,6 +352,38 @@ def banks_case(prusim, fw, work, name, outputs, width, scan, planes, lsb, init=(
             result = dict(refresh=t1 - t0, clk=dec.clock_stats(t0, t1),
                           lit=sum(e - s_ for s_, e, a in pulses), lsb=lsb, words=words)
     return result
+
+
+# Falcon Player's published figure for its BeagleBone matrix driver: 24
+# 64x32 panels at 12 bits refresh at 40-101 Hz (../shared/reference/
+# pixels-and-matrix.md; not measured here)
+FPP_WALL_HZ = (40, 101)
+
+
+def wall(prusim, fw, work, bench):
+    """The Octoscroller wall, 8 outputs of 3 chained 64x32 panels (24
+    panels) at 12 bit planes and the shortest lit time OE on a GPIO bank
+    allows (8 cycles, 40 ns), every output decoded; with BENCH its figure
+    against Falcon Player's and the physical limit: every clock's
+    (2 * 4 + 1) GPIO writes at the L4 path's 8 cycles each (prusim's
+    model), plus every row's lit time."""
+    planes, lsb, rows, clocks = 12, 8, 16, 192
+    res = banks_case(prusim, fw, work, "wall: Octoscroller 8 outputs x 3 64x32, 12 planes", 8,
+                     clocks, rows, planes, lsb)
+    if not res or not bench:
+        return
+    shift = planes * rows * clocks * res["words"] * 8
+    lit = rows * lsb * ((1 << planes) - 1)
+    limit = 200e6 / (shift + lit)
+    hz = 200e6 / res["refresh"]
+    print("BENCH: hub75 Octoscroller wall, 24 64x32 panels (8 outputs x 3), 12 bit planes, "
+          "LSB 40 ns: refresh %d PRU cycles = %.1f Hz; %.2fx Falcon Player's 40 Hz, %.2fx its "
+          "101 Hz (its published range); %.0f %% of the physical limit %.1f Hz (%d GPIO writes "
+          "a clock at 8 cycles: %d cycles shifting + %d lit); pixel clock %.2f MHz peak, "
+          "%.2f MHz mean (exact, prusim)"
+          % (res["refresh"], hz, hz / FPP_WALL_HZ[0], hz / FPP_WALL_HZ[1], 100 * limit and
+             100 * hz / limit, limit, res["words"], shift, lit, res["clk"]["inst_hz"] / 1e6,
+             res["clk"]["burst_hz"] / 1e6))
 
 
 def main():
@@ -389,6 +423,7 @@ def main():
             clk = r[k]["clk"]
             check("%s: pixel clock within a row (%d cycles)" % (k, period),
                   clk["min_period"] == period, str(clk["min_period"]))
+    wall(prusim, fw, work, bench)
     if bench:
         # the issue's yardstick: eight chained 64x32 panels at 8 bit planes
         r["chain8"] = case(prusim, fw, work, "bone-r30 chain of 8 (512x32)", BONE, 512, 32, 16, 8,

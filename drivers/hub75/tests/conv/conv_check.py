@@ -108,6 +108,30 @@ def banks_checks(conv, work):
         want = hub75_model.banks_frame(data[:outputs], slots, imgs, rows, planes)
         check("frame buffer, every line on GPIO banks: %s" % name, got == want,
               "%d/%d bytes" % (len(got), len(want)))
+    # the wall as built: serpentine, turned
+    outputs, pw, ph, chain = 4, 32, 16, 2
+    slots = hub75_model.bank_slots(data[:outputs], hub75_model.OCTO_CTRL["bank"])
+    lines = ",".join("%d:%d" % (slots.index(b), bit) for o in data[:outputs] for b, bit in o)
+    w, h = pw * chain, ph * outputs
+    for serp, rot in ((1, 0), (0, 90), (1, 180), (1, 270)):
+        dw, dh = (h, w) if rot in (90, 270) else (w, h)
+        a = image(dw, dh, "xrgb8888", 50 + rot + serp)
+        pa = os.path.join(work, "a.raw")
+        with open(pa, "wb") as f:
+            f.write(a)
+        got = subprocess.run([conv, "banks", "6", "linear", str(pw), str(ph), str(chain),
+                              str(outputs), "direct", lines, pa, str(serp), str(rot)],
+                             capture_output=True).stdout
+        shown = hub75_model.expected(a, "XRGB8888", dw, dh, 6, "linear")
+        chains = [[None] * w for _ in range(h)]
+        for y in range(h):
+            for x in range(w):
+                dx, dy = hub75_model.arrange(x, y, w, h, ph, serp, rot)
+                chains[y][x] = shown[dy][dx]
+        imgs = [chains[o * ph:(o + 1) * ph] for o in range(outputs)]
+        want = hub75_model.banks_frame(data[:outputs], slots, imgs, ph // 2, 6)
+        check("frame buffer, 4 outputs x 2 32x16, %sturned %d" % (
+            "serpentine, " if serp else "", rot), got == want, "%d/%d bytes" % (len(got), len(want)))
 
 
 def mux_checks(conv, work):

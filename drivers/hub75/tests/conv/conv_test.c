@@ -15,10 +15,11 @@
  *   conv_test mux NAME PANEL_WIDTH PANEL_HEIGHT CHAIN
  *	hub75_mux_table(): "bad" or per position as driven, the "x y" of
  *	the pixel it lights, one per line
- *   conv_test banks PLANES CORR PANEL_W PANEL_H CHAIN OUTPUTS MUX LINES A
+ *   conv_test banks PLANES CORR PANEL_W PANEL_H CHAIN OUTPUTS MUX LINES A [SERP ROT]
  *	HUB75_DATA_BANKS: the frame buffer of image A (XRGB8888, PANEL_W *
- *	CHAIN x PANEL_H * OUTPUTS), LINES "slot:bit,..." for the six lines of
- *	each output in turn; written to stdout
+ *	CHAIN x PANEL_H * OUTPUTS, or turned by ROT), LINES "slot:bit,..." for
+ *	the six lines of each output in turn, SERP 1 for a serpentine; written
+ *	to stdout
  *   conv_test bench-banks N
  *	N conversions of the Octoscroller's wall, 8 outputs of 3 64x32
  *	panels (192x256), 12 planes, CIE 1931
@@ -85,7 +86,7 @@ static u32 *mux_table(enum hub75_mux mux, unsigned int w, unsigned int h, unsign
 static bool banks_layout(struct hub75_layout *l, unsigned int planes,
 			 enum hub75_correction c, unsigned int pw, unsigned int ph,
 			 unsigned int chain, unsigned int outputs, enum hub75_mux mux,
-			 const char *lines)
+			 const char *lines, bool serp, unsigned int rot)
 {
 	unsigned int o, k, s = hub75_mux_stretch(mux);
 	u32 *table = malloc(sizeof(*table) * pw * chain * ph * outputs);
@@ -94,10 +95,16 @@ static bool banks_layout(struct hub75_layout *l, unsigned int planes,
 		free(table);
 		return false;
 	}
+	hub75_arrange(table, (size_t)pw * chain * ph * outputs, pw * chain, ph * outputs, ph,
+		      serp, rot);
 	*l = (struct hub75_layout){ .width = pw * chain, .height = ph * outputs,
 		.clocks = pw * chain * s, .rows = ph / s / 2, .planes = planes,
 		.entry_bytes = 16, .outputs = outputs, .mux = table };
 	l->row_bytes = l->clocks * 16;
+	if (rot == 90 || rot == 270) {
+		l->width = ph * outputs;
+		l->height = pw * chain;
+	}
 	for (o = 0; o < outputs; o++) {
 		for (k = 0; k < HUB75_LINES; k++) {
 			unsigned int slot, bit;
@@ -156,13 +163,14 @@ int main(int argc, char **argv)
 		free(buf);
 		return 0;
 	}
-	if (argc == 11 && !strcmp(argv[1], "banks")) {
+	if ((argc == 11 || argc == 13) && !strcmp(argv[1], "banks")) {
 		unsigned int pw = atoi(argv[4]), ph = atoi(argv[5]), chain = atoi(argv[6]);
 		unsigned int outputs = atoi(argv[7]);
 
 		if (outputs < 1 || outputs > HUB75_MAX_OUTPUTS ||
 		    !banks_layout(&l, atoi(argv[2]), corr(argv[3]), pw, ph, chain, outputs,
-				  mux_of(argv[8]), argv[9])) {
+				  mux_of(argv[8]), argv[9], argc == 13 && atoi(argv[11]),
+				  argc == 13 ? atoi(argv[12]) : 0)) {
 			fprintf(stderr, "conv_test: the layout does not fit\n");
 			return 2;
 		}
@@ -195,7 +203,7 @@ int main(int argc, char **argv)
 		unsigned int n = atoi(argv[2]);
 		u32 *img;
 
-		banks_layout(&l, 12, HUB75_CIE1931, 64, 32, 3, 8, HUB75_MUX_DIRECT, lines);
+		banks_layout(&l, 12, HUB75_CIE1931, 64, 32, 3, 8, HUB75_MUX_DIRECT, lines, false, 0);
 		img = malloc((size_t)l.width * l.height * 4);
 		for (i = 0; i < l.width * l.height; i++)
 			img[i] = i * 2654435761u;
