@@ -203,7 +203,8 @@ int main(int argc, char **argv)
 		unsigned int n = atoi(argv[2]);
 		u32 *img;
 
-		banks_layout(&l, 12, HUB75_CIE1931, 64, 32, 3, 8, HUB75_MUX_DIRECT, lines, false, 0);
+		banks_layout(&l, 12, HUB75_CIE1931, 64, 32, 3, 8, HUB75_MUX_DIRECT, lines, false,
+			     0);
 		img = malloc((size_t)l.width * l.height * 4);
 		for (i = 0; i < l.width * l.height; i++)
 			img[i] = i * 2654435761u;
