@@ -148,7 +148,9 @@ static const struct {
 #define ICSS_IEP_COUNT          0x2e00c
 
 #define FIRST_ARM_HOST          2       /* host interrupts 2..9 go to the ARM */
-#define TRACE_LEN               (1u << 18)
+/* as many records as the port's buffer carries after the header: 524285 */
+#define TRACE_LEN               ((PORT_BUF_SIZE - sizeof(struct prusim_trace_hdr)) / \
+                                 sizeof(struct prusim_trace_rec))
 #define PAD_RESET               0x27    /* mode 7, pull-down, receiver on */
 #define PAD_MASK                0x7f
 #define PAD_MODE                0x07    /* MUXMODE */

@@ -20,7 +20,8 @@
 #    text written with cat to /dev/fbN of a 64x32 HUB75 panel, decoded from
 #    the pins by tools/hub75-decode.py and drawn as the panel would look
 #    (drivers/hub75/tests/hub75_demo.py: matrix-picture.png,
-#    matrix-scroll.gif, matrix-scroll.png);
+#    matrix-scroll.gif, matrix-scroll.png); then a picture on the
+#    Octoscroller's 24 panels, every output decoded (matrix-wall.png);
 #  - prukit's pru_pwm driver (tests/vm/demo/servo): four servos swept
 #    through the PWM chip's sysfs files after prukit servo set them, every
 #    pulse measured from the pins and drawn over time
@@ -149,9 +150,10 @@ PY
 echo
 echo "prukit's hub75 driver: a 64x32 HUB75 panel on PRU1's R30 (PRUKIT-HUB75-00A0), a picture"
 echo "and scrolling text written with cat to /dev/fbN; what the panel shows, decoded from the"
-echo "pins by tools/hub75-decode.py (8 bit planes, CIE 1931 levels; every pixel must be exact):"
+echo "pins by tools/hub75-decode.py (8 bit planes, CIE 1931 levels; every pixel must be exact);"
+echo "then the Octoscroller's 24 panels (8 outputs x 3 64x32 on GPIO, PRU0), each output decoded:"
 mkdir -p "$out/matrix"
-mv "$out"/hub75.json "$out"/picture.* "$out"/scroll-* "$out/matrix/"
+mv "$out"/hub75.json "$out"/picture.* "$out"/scroll-* "$out"/wall.* "$out/matrix/"
 /usr/bin/python3 "$PRUKIT_TOP/drivers/hub75/tests/hub75_demo.py" show "$out/matrix" "$out"
 
 # prukit's pru_pwm driver: the servo sweep
@@ -187,7 +189,8 @@ msg "pictures: $out/rainbow.gif, $out/rainbow.png, $out/frames/frame-*.png," \
 	"VCD for PulseView/GTKWave: $out/neopixel.vcd; the sigrok session for PulseView:" \
 	"$out/logic.sr"
 msg "pru_pwm: $out/servo.png; VCD: $out/servo.vcd; pru_encoder: $out/encoder.png"
-msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png"
+msg "hub75: $out/matrix-picture.png, $out/matrix-scroll.gif, $out/matrix-scroll.png," \
+	"$out/matrix-wall.png"
 msg "prukit-pixeld: $out/pixeld-strings.gif, $out/pixeld-strings.png, $out/pixeld-panel.gif," \
 	"$out/pixeld-panel.png; VCD: $out/pixeld-strings.vcd"
 msg "ws281x: $out/ws281x-leds.png, $out/ws281x-leds.gif, $out/ws281x-strings.png," \

@@ -4,15 +4,18 @@
 
     hub75_demo.py frames DIR
         the frames the guest draws (tests/vm/demo/matrix): DIR/picture.raw,
-        a 64x32 XRGB8888 picture, and DIR/scroll-NN.raw, text scrolling
-        across the panel (drawn with python3-pil's built-in font)
+        a 64x32 XRGB8888 picture, DIR/scroll-NN.raw, text scrolling
+        across the panel (drawn with python3-pil's built-in font), and
+        DIR/wall/wall.raw, a 256x192 picture for the Octoscroller's 24
+        panels (8 outputs x 3 64x32, snaking, turned 90 degrees)
     hub75_demo.py show ARTIFACTS OUTDIR
         every picture the guest recorded (hub75.json, NAME.trace) decoded
         from the simulated pins by tools/hub75-decode.py and compared with
         what was drawn, pixel by pixel (drivers/hub75/tests/hub75_pictures.py);
         then drawn as the panel would look: OUTDIR/matrix-picture.png,
-        matrix-scroll.gif and matrix-scroll.png (a frame per row), and the
-        picture in the terminal.  Exits 1 unless every pixel of every frame
+        matrix-scroll.gif and matrix-scroll.png (a frame per row),
+        matrix-wall.png (the 24 panels, each output's chains put where the
+        wall shows them), and the picture in the terminal.  Exits 1 unless every pixel of every frame
         is exact.
 
 Decoded levels are linear light (the driver applies CIE 1931 lightness
@@ -24,12 +27,15 @@ import struct
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hub75_model import arrange  # noqa: E402
 from hub75_pictures import check_picture  # noqa: E402
 
 W, H = 64, 32
 TEXT = "HUB75 on a BeagleBone PRU"
 STEP = 6			# pixels the text moves per frame
 SCALE = 8			# pixels per LED in the pictures
+WALL_W, WALL_H = 256, 192	# the wall as shown: 8 outputs x 3 64x32, turned 90
+WALL_SCALE = 4
 
 
 def xrgb(img):
@@ -66,7 +72,25 @@ def frames(outdir):
         with open(os.path.join(outdir, "scroll-%02d.raw" % n), "wb") as f:
             f.write(xrgb(fr))
         n += 1
-    print("hub75_demo: a picture and %d frames of scrolling text in %s" % (n, outdir))
+    # the wall: a sky in bands 8 LEDs high (the chains run down the wall:
+    # few data changes a clock, so 2.6 refreshes fit the simulator's
+    # trace), a sun, hills and big text
+    wall = Image.new("RGB", (WALL_W, WALL_H))
+    d = ImageDraw.Draw(wall)
+    for y in range(0, WALL_H, 8):
+        d.rectangle([(0, y), (WALL_W - 1, y + 7)], fill=(30 + y, 10 + y // 2, 140 - y * 2 // 3))
+    d.ellipse([170, 20, 230, 80], fill=(255, 210, 60))
+    d.polygon([(0, 191), (0, 140), (60, 110), (120, 150), (180, 120), (255, 145), (255, 191)],
+              fill=(20, 110, 40))
+    small = Image.new("L", (WALL_W // 4, WALL_H // 4))
+    ImageDraw.Draw(small).text((3, 2), "24 panels", font=font, fill=255)
+    ImageDraw.Draw(small).text((3, 14), "8 outputs", font=font, fill=255)
+    wall.paste((255, 255, 255), (0, 0), small.resize((WALL_W, WALL_H), Image.NEAREST))
+    os.makedirs(os.path.join(outdir, "wall"), exist_ok=True)
+    with open(os.path.join(outdir, "wall", "wall.raw"), "wb") as f:
+        f.write(xrgb(wall))
+    print("hub75_demo: a picture, %d frames of scrolling text and the wall's picture in %s"
+          % (n, outdir))
 
 
 def perceived(level, planes):
@@ -86,6 +110,31 @@ def panel(levels, planes):
             col = tuple(perceived(v, planes) for v in px)
             d.ellipse([x * SCALE + 1, y * SCALE + 1, x * SCALE + SCALE - 2,
                        y * SCALE + SCALE - 2], fill=col)
+    return img
+
+
+def wall_picture(m, levels):
+    """The wall as it looks: LEVELS are the outputs' chains one under the
+    other (check_picture()); each LED put where the display shows it, a
+    dark seam between panels."""
+    from PIL import Image, ImageDraw
+    s = WALL_SCALE
+    img = Image.new("RGB", (m["width"] * s, m["height"] * s), (8, 8, 8))
+    d = ImageDraw.Draw(img)
+    cw, full, band = len(levels[0]), len(levels), len(levels) // m["outputs"]
+    for y, row in enumerate(levels):
+        for x, px in enumerate(row):
+            dx, dy = arrange(x, y, cw, full, band, m.get("serpentine", False),
+                             m.get("rotation", 0))
+            col = tuple(perceived(v, m["planes"]) for v in px)
+            d.rectangle([dx * s, dy * s, dx * s + s - 2, dy * s + s - 2], fill=col)
+    pw, ph = cw // m["chain"], band		# a panel, as driven
+    if m.get("rotation", 0) in (90, 270):
+        pw, ph = ph, pw
+    for x in range(pw, m["width"], pw):
+        d.line([(x * s - 1, 0), (x * s - 1, m["height"] * s)], fill=(0, 0, 0), width=2)
+    for y in range(ph, m["height"], ph):
+        d.line([(0, y * s - 1), (m["width"] * s, y * s - 1)], fill=(0, 0, 0), width=2)
     return img
 
 
@@ -133,6 +182,10 @@ def show(art, outdir):
     if "picture" in decoded:
         terminal(*decoded["picture"])
         panel(*decoded["picture"]).save(os.path.join(outdir, "matrix-picture.png"))
+    wall = [(m, decoded[m["name"]][0]) for m in pics if m["name"] == "wall" and
+            m["name"] in decoded]
+    if wall:
+        wall_picture(*wall[0]).save(os.path.join(outdir, "matrix-wall.png"))
     scroll = [panel(*decoded[m["name"]]) for m in pics
               if m["name"].startswith("scroll-") and m["name"] in decoded]
     if scroll:

@@ -109,7 +109,7 @@ class Recorder:
 
     def capture_start(self, disp, name, meta, enable):
         """The pins from ENABLE() (a callable, True if it worked) on, the
-        first 262144 changes: what the firmware does as the display starts.
+        first 524285 changes: what the firmware does as the display starts.
         Waits for a whole refresh after it.  False if ENABLE failed."""
         with open(SIM + "/trace", "w") as f:
             f.write("clear first")
