@@ -94,6 +94,7 @@ class Pixeld:
         self.order = 0
         self.e131_outputs = {}
         self.on_join = None
+        self.on_ddp = None
         self.on_pending = None
         self.attach_all(self.clock())
 
@@ -139,6 +140,12 @@ class Pixeld:
                 self.e131_outputs.setdefault(out, set()).add(uni.number)
         if self.on_join:
             self.on_join(sorted(set(self.universes) | set(self.s["sync-universes"])))
+        if self.on_ddp:
+            self.on_ddp(self.ddp_bytes())
+
+    def ddp_bytes(self):
+        """The bytes of a DDP frame of every open output DDP feeds."""
+        return max((m.kw["offset"] + len(m.stream) for m in self.ddp_maps), default=0)
 
     def flush(self, outputs):
         """OUTPUTS have a complete frame: put their maps' data into their

@@ -20,12 +20,14 @@ from .merge import Pixeld
 CONFIG = "/etc/prukit/pixeld.conf"
 MAX_UDP = 65536
 SO_RXQ_OVFL = getattr(socket, "SO_RXQ_OVFL", 40)	# <asm-generic/socket.h>
-# Kernel memory a received E1.31 datagram takes from the socket's receive
-# buffer (its skb's truesize: 1280 bytes on loopback, up to 2304 with the
-# 2 KiB buffers of a board's Ethernet driver), and the frames of every
-# mapped universe the buffer must hold while the daemon is busy
-E131_TRUESIZE = 2304
+# Kernel memory a received datagram (E1.31's 638 bytes, DDP's 1450 at most)
+# takes from the socket's receive buffer (its skb's truesize: 1280 bytes on
+# loopback for E1.31, up to 2304 with the 2 KiB buffers of a board's
+# Ethernet driver), and the frames the buffer must hold while the daemon is
+# busy: of every mapped universe (E1.31), of the bytes DDP feeds (DDP)
+UDP_TRUESIZE = 2304
 RCVBUF_FRAMES = 4
+DDP_DATA = 1440			# pixel bytes a DDP datagram carries (senders' usual most)
 JOINS_PER_SOCKET = 20			# net.ipv4.igmp_max_memberships' default
 SYNC_JOINS = 8				# sync groups joined as data names them
 
@@ -64,6 +66,7 @@ class Server:
         self.dynamic = {}		# sync universe joined as data named it -> when
         self.clients = {}
         self.kernel_drops = {}		# UDP socket -> its drops reported so far
+        self.ddp_socks, self.ddp_sized = [], 0	# DDP's sockets, the frame they are for
         self.said_no_route = False
         self.reload_asked = self.stats_asked = self.stop_asked = False
         self.px = None
@@ -86,6 +89,8 @@ class Server:
             self.tcp(addr, s["opc-port"])
         if s["ddp"]:
             self.udp(addr, s["ddp-port"], self.px.feed_ddp, "DDP")
+            self.px.on_ddp = self.size_ddp
+            self.size_ddp(self.px.ddp_bytes())
         log("listening on %s: %s" % (addr, ", ".join(
             "%s %s %d" % p for p in [("E1.31", "UDP", s["e131-port"])] * s["e131"] +
             [("OPC", "TCP+UDP", s["opc-port"])] * s["opc"] +
@@ -115,6 +120,8 @@ class Server:
         sk.setblocking(False)
         if universes:
             self.size_rcvbuf(sk, universes)
+        if what == "DDP":
+            self.ddp_socks.append(sk)
         # each datagram says how many the kernel dropped before it, for
         # want of room in the receive buffer
         sk.setsockopt(socket.SOL_SOCKET, SO_RXQ_OVFL, 1)
@@ -123,28 +130,42 @@ class Server:
         self.sel.register(sk, selectors.EVENT_READ, ("udp", feed, prefix))
         self.socks.append(sk)
 
+    def size_ddp(self, nbytes):
+        """The DDP sockets' receive buffers for frames of NBYTES (what the
+        open outputs DDP feeds take), a datagram per DDP_DATA bytes: a
+        sender puts a whole frame on the wire at once, push flag last, and
+        the default buffer holds about 90 of its datagrams (126 KiB of
+        pixels; a frame of 24 64x32 panels takes 144 KiB)."""
+        if not nbytes or nbytes == self.ddp_sized:
+            return
+        self.ddp_sized = nbytes
+        for sk in self.ddp_socks:
+            self.size_rcvbuf(sk, -(-nbytes // DDP_DATA), "DDP", "datagram")
+
     @staticmethod
-    def size_rcvbuf(sk, universes):
-        """A receive buffer for RCVBUF_FRAMES frames of UNIVERSES universes:
-        the default (208 KiB, 166 datagrams) drops part of every frame of
-        170 universes at 54 fps.  The kernel caps it at net.core.rmem_max
-        (208 KiB on Debian) for a daemon without CAP_NET_ADMIN: the log
-        says what to raise it to.  Returns (bytes got, bytes wanted)."""
-        want = universes * RCVBUF_FRAMES * E131_TRUESIZE
+    def size_rcvbuf(sk, datagrams, what="E1.31", per="universe"):
+        """A receive buffer for RCVBUF_FRAMES frames of DATAGRAMS datagrams
+        (E1.31: a universe each): the default (208 KiB, 166 E1.31
+        datagrams) drops part of every frame of 170 universes at 54 fps.
+        The kernel caps it at net.core.rmem_max (208 KiB on Debian) for a
+        daemon without CAP_NET_ADMIN: the log says what to raise it to.
+        Returns (bytes got, bytes wanted)."""
+        want = datagrams * RCVBUF_FRAMES * UDP_TRUESIZE
         got = sk.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF)
         if got < want:
             # the kernel doubles what it is asked for (its own overhead)
             sk.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, (want + 1) // 2)
             got = sk.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF)
+        many = "%d %s%s" % (datagrams, per, "s" * (datagrams > 1))
         if got < want:
-            log("E1.31: a receive buffer of %d KiB, %d KiB wanted for %d universes (%d "
+            log("%s: a receive buffer of %d KiB, %d KiB wanted for frames of %s (%d "
                 "frames): datagrams will be dropped while the daemon is busy "
-                "(e131.kernel_drops); raise net.core.rmem_max to %d or more (sysctl.d: "
-                "net.core.rmem_max = %d)" % (got >> 10, want >> 10, universes, RCVBUF_FRAMES,
-                                            want, want))
+                "(%s.kernel_drops); raise net.core.rmem_max to %d or more (sysctl.d: "
+                "net.core.rmem_max = %d)" % (what, got >> 10, want >> 10, many, RCVBUF_FRAMES,
+                                            what.replace(".", "").lower(), want, want))
         else:
-            log("E1.31: a receive buffer of %d KiB for %d universe%s (%d frames)"
-                % (got >> 10, universes, "s" * (universes > 1), RCVBUF_FRAMES))
+            log("%s: a receive buffer of %d KiB for frames of %s (%d frames)"
+                % (what, got >> 10, many, RCVBUF_FRAMES))
         return got, want
 
     def receive(self, sk, prefix):
@@ -275,6 +296,7 @@ class Server:
         for sk, _ in self.joiners:
             sk.close()
         self.socks, self.clients, self.joiners = [], {}, []
+        self.ddp_socks, self.ddp_sized = [], 0
         self.kernel_drops = {}
         self.joined, self.dynamic = {}, {}
         self.px.close()

@@ -464,6 +464,11 @@ check("170 universes: a receive buffer for 4 frames of them asked (%d KiB), got 
 got, want = server.Server.size_rcvbuf(FakeSock(212992), 170)
 check("... under Debian's rmem_max (208 KiB): less, and the log says what to raise it to",
       got < want, (got, want))
+got, want = server.Server.size_rcvbuf(FakeSock(212992), 103, "DDP", "datagram")
+check("DDP, frames of 103 datagrams (24 64x32 panels): 4 of them asked (%d KiB); under "
+      "Debian's rmem_max the most it allows, more than the default and a whole frame" % (
+          want >> 10), want == 103 * 4 * 2304 and got == 2 * 212992 and got >= 103 * 2304,
+      (got, want))
 
 # --- unsynchronized frames: never two mixed ----------------------------------------------------
 def torn_run(sends):
@@ -544,6 +549,8 @@ pk = ps.ddp_packets(data, size=1440)
 px.feed_ddp(pk[0])
 px.feed_ddp(pk[1])
 check("DDP: nothing before the push", frames("d", 3000) == [])
+check("ddp_bytes(): a DDP frame for the open outputs is 3000 bytes (offset 300, 900 pixels)",
+      px.ddp_bytes() == 3000, px.ddp_bytes())
 px.feed_ddp(pk[2])
 check("DDP, 3 packets, push on the last: bytes 300-2999 at pixel 100, once",
       frames("d", 3000) == [bytes(300) + data[300:3000]], len(frames("d", 3000)))
