@@ -15,8 +15,8 @@
         then drawn as the panel would look: OUTDIR/matrix-picture.png,
         matrix-scroll.gif and matrix-scroll.png (a frame per row),
         matrix-wall.png (the 24 panels, each output's chains put where the
-        wall shows them), and the picture in the terminal.  Exits 1 unless every pixel of every frame
-        is exact.
+        wall shows them), and the picture in the terminal.  Exits 1 unless
+        every pixel of every frame is exact.
 
 Decoded levels are linear light (the driver applies CIE 1931 lightness
 correction); the pictures show them as the eye sees them: each level back
