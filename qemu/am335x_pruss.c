@@ -149,7 +149,8 @@ static const struct {
 
 #define FIRST_ARM_HOST          2       /* host interrupts 2..9 go to the ARM */
 /* as many records as the port's buffer carries after the header: 524285 */
-#define TRACE_LEN               ((PORT_BUF_SIZE - sizeof(struct prusim_trace_hdr)) / \
+#define TRACE_LEN               ((PORT_BUF_SIZE - \
+                                  sizeof(struct prusim_trace_hdr)) / \
                                  sizeof(struct prusim_trace_rec))
 #define PAD_RESET               0x27    /* mode 7, pull-down, receiver on */
 #define PAD_MASK                0x7f
