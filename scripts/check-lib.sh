@@ -4,7 +4,9 @@
 # self-test (tests/harness/selftest.sh).  The caller sets log (a file the
 # steps' output is appended to), passed and failed (the running totals), and
 # runs without "set -e": a step's failure is counted, it does not end make
-# check.
+# check.  If the caller sets fails (a file), each FAIL: line is appended
+# there too, after its step's name, so that make check can repeat them at
+# its end, where the tail of a CI log shows them.
 
 . "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
@@ -30,12 +32,16 @@ step() {
 	n=$((p + f))
 	if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
 		tail -n 20 "$out"
-		echo "FAIL: $name exited with status $rc" | tee -a "$log"
+		echo "FAIL: $name exited with status $rc" | tee -a "$log" "$out"
 		f=1
 	fi
 	if [ "$n" -lt "$min" ]; then
-		echo "FAIL: $name: $n checks ran, at least $min expected" | tee -a "$log"
+		echo "FAIL: $name: $n checks ran, at least $min expected" |
+			tee -a "$log" "$out"
 		f=$((f + 1))
+	fi
+	if [ -n "${fails:-}" ]; then
+		grep '^FAIL:' "$out" | sed "s/^/[$name] /" >>"$fails"
 	fi
 	rm -f "$out"
 	passed=$((passed + p))

@@ -15,6 +15,8 @@ cd "$PRUKIT_TOP" || exit 1
 mkdir -p out
 log=out/check.log
 : >"$log"
+fails=out/check-failures.log
+: >"$fails"
 passed=0
 failed=0
 t0=$(date +%s)
@@ -97,6 +99,11 @@ step vmdeb 24 scripts/vm.sh deb 6.1			# [26]
 # (after the VM tests, so that a cold run has its QEMU and kernels cached).
 step fresh-clone 5 tests/harness/fresh-clone.sh		# [5]
 
+# The failures again, at the end, where the tail of a CI log shows them.
+if [ -s "$fails" ]; then
+	echo "The failed checks ($failed; out/check-failures.log):"
+	head -n 40 "$fails"
+fi
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

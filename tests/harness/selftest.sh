@@ -16,6 +16,7 @@ set -uo pipefail
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 log=$tmp/check.log
+fails=$tmp/fails
 bad=0
 
 # Fake steps.
@@ -75,6 +76,24 @@ if grep -qxF "log line" "$log"; then
 	echo "PASS: harness: the log holds the step's output"
 else
 	echo "FAIL: harness: the log does not hold the step's output"
+	bad=1
+fi
+# Every FAIL: line above, the step's own and step()'s, is in fails once,
+# after its step's name (make check repeats them at its end).
+want_fails="[crash] FAIL: crash exited with status 3
+[silent] FAIL: silent exited with status 1
+[missing] FAIL: missing exited with status 127
+[killed] FAIL: killed exited with status 137
+[fails] FAIL: two
+[few] FAIL: few: 2 checks ran, at least 5 expected
+[nothing] FAIL: nothing: 0 checks ran, at least 1 expected
+[both] FAIL: both exited with status 1
+[both] FAIL: both: 2 checks ran, at least 5 expected"
+if [ "$(cat "$fails")" = "$want_fails" ]; then
+	echo "PASS: harness: the failures file lists every failure once, by step"
+else
+	echo "FAIL: harness: the failures file is not the failures:"
+	sed 's/^/    /' "$fails"
 	bad=1
 fi
 exit "$bad"
