@@ -15,6 +15,45 @@ SIM = sim_dir()
 DRV = "/sys/bus/platform/drivers/hub75"
 DEVS = "/sys/bus/platform/devices"
 
+# The 24-panel wall of tests/vm/overlays/test-nodes.dtso: the Octoscroller's
+# 8 outputs x 3 64x32 panels at 1/16 scan, every line a GPIO written by PRU0,
+# the chains snaking and the picture turned 90 degrees.  WALL_GEOMETRY is
+# its part of a capture's metadata (the panel's timing is the caller's).
+WALL = "hub75-octo"
+WALL_GEOMETRY = dict(width=256, height=192, scan=16, chain=3, outputs=8, serpentine=True,
+                     rotation=90, map="octoscroller", format="XRGB8888")
+
+
+class WallPad:
+    """P9_29 (gpio3_15, pad 0x994) for the wall.
+
+    The pad is &pru0's in the VM's tree (PRUKIT-WS281X-00A0) and one of
+    the wall's data lines: the wall needs it in GPIO mode, set behind
+    pinctrl's back through the simulated board's pads file as config-pin
+    would.  restore() gives the pad its mode from before, which the next
+    user of PRU0's R30 on it (make demo's NeoPixels) needs.
+    """
+
+    PAD = "0x994"
+
+    def __init__(self):
+        with open(SIM + "/pads") as f:
+            old = [ln.split()[1] for ln in f if ln.startswith(self.PAD + " ")]
+        self.old = old[0] if old else None
+
+    def gpio(self):
+        """The pad to GPIO mode (7, receiver off); True if the write was taken."""
+        return write_attr(SIM + "/pads", self.PAD + " 0x0f") == 0
+
+    def restore(self):
+        if self.old is not None:
+            write_attr(SIM + "/pads", "%s %s" % (self.PAD, self.old))
+
+
+def wall_release():
+    """After the wall is unbound: its node back to no driver."""
+    write_attr(DEVS + "/" + WALL + "/driver_override", "\n")
+
 
 def sim_cycles():
     with open(SIM + "/stats") as f:
