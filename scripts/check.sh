@@ -103,6 +103,8 @@ step fresh-clone 5 tests/harness/fresh-clone.sh		# [5]
 if [ -s "$fails" ]; then
 	echo "The failed checks ($failed; out/check-failures.log):"
 	head -n 40 "$fails"
+	# the VM's boots, to replay a failure under the same jitter
+	grep -h "jitter seed" "$log" | sort -u | head -n 12
 fi
 msg "make check took $(( $(date +%s) - t0 )) s; log in $log"
 echo "$passed passed, $failed failed"

@@ -336,7 +336,8 @@ boot() {
 		-global "am335x-pruss.hold-mode=$hold_mode"
 		-global "am335x-pruss.ocp-write-delay=$ocp_write_delay"
 		-global "am335x-pruss.ddr-jitter=$ddr_jitter")
-	[ "$jitter" = 0 ] || msg "the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
+	[ "$jitter" = 0 ] ||
+		msg "$(basename "$dir"): the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then
