@@ -123,6 +123,7 @@ static const struct {
 #define GPIO_IRQWAKEN(n)        (0x044 + 4 * (n))
 #define GPIO_SYSSTATUS          0x114
 #define GPIO_CTRL               0x130
+#define GPIO_CTRL_DISABLEMODULE 0x1     /* the module's clocks are gated */
 #define GPIO_LEVELDETECT(n)     (0x140 + 4 * (n))
 #define GPIO_RISINGDETECT       0x148
 #define GPIO_FALLINGDETECT      0x14c
@@ -263,6 +264,7 @@ struct AM335xPrussState {
     uint32_t gpio_shown[PRUSIM_GPIO_BANKS];
     uint32_t gpio_unmuxed_seen[PRUSIM_GPIO_BANKS];
     uint64_t gpio_unpinned;         /* GPIO output stores that reached no pin */
+    uint64_t gpio_gated;            /* ... of them, to a bank gpio-omap gated */
     bool arm_gpio;                  /* in an ARM store to a GPIO bank */
 
     /* GPIO registers the simulator does not keep */
@@ -382,8 +384,19 @@ static void r30_show(AM335xPrussState *p, uint64_t cycle, unsigned int pin)
 }
 
 /*
+ * gpio-omap disables a bank's module (GPIO_CTRL.DISABLEMODULE: its clocks
+ * are gated) when the bank's last requested line is freed, and enables it
+ * when one is requested again.
+ */
+static bool gpio_gated(AM335xPrussState *p, unsigned int bank)
+{
+    return p->gpio_reg[bank][GPIO_CTRL / 4] & GPIO_CTRL_DISABLEMODULE;
+}
+
+/*
  * A GPIO line reaches its pad while it is an output (OE bit 0) and the pad
  * is in mode 7; otherwise the trace shows it low (pulls are not modelled).
+ * A gated bank's pins keep what they showed until it is enabled again.
  */
 static void gpio_show(AM335xPrussState *p, uint64_t cycle, unsigned int bank)
 {
@@ -392,6 +405,9 @@ static void gpio_show(AM335xPrussState *p, uint64_t cycle, unsigned int bank)
     uint32_t diff = shown ^ p->gpio_shown[bank];
     unsigned int bit;
 
+    if (gpio_gated(p, bank)) {
+        return;
+    }
     p->gpio_shown[bank] = shown;
     for (bit = 0; diff; bit++, diff >>= 1) {
         if (diff & 1) {
@@ -520,7 +536,10 @@ static void stim_free(struct prusim_stim *st)
  * bits, since such a store has no other purpose than a pin (the test
  * runner fails the test that made one).  The ARM's count only for an
  * output line: gpio-omap sets DATAOUT before it clears OE, as drivers do
- * on a board.
+ * on a board.  A PRU's store to a gated bank reaches no pin, and is
+ * counted as such (on a board it is lost).  The ARM's are not: gpio-omap
+ * restores a bank's registers on runtime resume before it enables the
+ * module, and the pins show them once it does.
  */
 static void cb_gpio_pin(AM335xPrussState *p, u64 cycle, unsigned int pin,
                         bool level)
@@ -534,8 +553,12 @@ static void cb_gpio_pin(AM335xPrussState *p, u64 cycle, unsigned int pin,
     } else {
         p->gpio_out[bank] &= ~bit;
     }
-    if (!(output && (p->gpio_pad_mask[bank] & bit)) &&
-        (output || !p->arm_gpio)) {
+    if (gpio_gated(p, bank) && !p->arm_gpio) {
+        p->gpio_gated++;
+        p->gpio_unpinned++;
+        p->gpio_unmuxed_seen[bank] |= bit;
+    } else if (!(output && (p->gpio_pad_mask[bank] & bit)) &&
+               (output || !p->arm_gpio)) {
         p->gpio_unpinned++;
         p->gpio_unmuxed_seen[bank] |= bit;
     }
@@ -1167,6 +1190,10 @@ static void gpio_write(void *opaque, hwaddr off, uint64_t val,
                 pruss_unimp(p, "GPIO%u IRQSTATUS_RAW set 0x%08x", bank, v);
             }
             break;
+        case GPIO_CTRL:
+            *reg = v;
+            gpio_show(p, p->s->now, bank);  /* enabled: the pins catch up */
+            break;
         default:
             *reg = v;
             break;
@@ -1412,6 +1439,14 @@ static uint32_t port_stats(AM335xPrussState *p)
     port_add(p, &len, "pads checked unmuxed_writes %" PRIu64 "\n",
              p->unmuxed_writes);
     port_add(p, &len, "gpio_unpinned_writes %" PRIu64 "\n", p->gpio_unpinned);
+    port_add(p, &len, "gpio_gated_writes %" PRIu64 " gated_banks",
+             p->gpio_gated);
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        if (gpio_gated(p, i)) {
+            port_add(p, &len, " gpio%u", i);
+        }
+    }
+    port_add(p, &len, "\n");
     port_add(p, &len, "unmuxed_outputs");
     for (i = 0; i < 64; i++) {
         if ((p->unmuxed_seen >> i) & 1) {
