@@ -92,7 +92,9 @@ fi
 put() {
 	cmp -s "$1" "$2" || cp "$1" "$2"
 }
-put "$PRUKIT_TOP/qemu/am335x_pruss.c" "$src/hw/misc/am335x_pruss.c"
+for f in "$PRUKIT_TOP"/qemu/am335x_pruss*.c "$PRUKIT_TOP"/qemu/am335x_pruss_internal.h; do
+	put "$f" "$src/hw/misc/${f##*/}"
+done
 put "$PRUKIT_TOP/qemu/am335x_pruss.h" "$src/include/hw/misc/am335x_pruss.h"
 for f in "$PRUKIT_TOP"/sim/*.c "$PRUKIT_TOP"/sim/*.h; do
 	put "$f" "$src/hw/misc/prusim/${f##*/}"
