@@ -330,14 +330,16 @@ cat_initrd() {
 # for both directions cost the guest about 40 s per boot), and an empty
 # 256 MiB one the guest writes /out onto.
 boot() {
-	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc
+	local dir=$1 in=$2 out=$3 indisk=$1/in.tar outdisk=$1/out.img rc name
 	local board=(-M vexpress-a15,pruss=on -d unimp,guest_errors -D "$dir/qemu.log"
 		-global "am335x-pruss.jitter-seed=$jitter"
 		-global "am335x-pruss.hold-mode=$hold_mode"
 		-global "am335x-pruss.ocp-write-delay=$ocp_write_delay"
 		-global "am335x-pruss.ddr-jitter=$ddr_jitter")
+	name=${dir##*/}
+	[ "$name" != boot2 ] || name="$(basename "$(dirname "$dir")") (second boot)"
 	[ "$jitter" = 0 ] ||
-		msg "$(basename "$dir"): the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
+		msg "$name: the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then
