@@ -6,7 +6,9 @@ packets built by pixel_send.py from the standards), and the daemon as a
 program (its command line, signals and sockets on loopback).  The VM test
 94-pixeld runs it on the devices with real senders; fuzz.py throws bad
 input at it.  Prints PASS:/FAIL: lines; exits 1 if any failed."""
+import atexit
 import os
+import shutil
 import signal
 import socket
 import subprocess
@@ -23,6 +25,7 @@ from prukit_pixeld import config, merge, outputs, protocols, server  # noqa: E40
 
 failed = 0
 TMP = tempfile.mkdtemp(prefix="pixeld-check.")
+atexit.register(shutil.rmtree, TMP, ignore_errors=True)
 
 
 def check(name, cond, detail=""):
