@@ -559,6 +559,7 @@ void prusim_default_config(struct prusim_config *cfg);
 void prusim_init(struct prusim *s, const struct prusim_config *cfg,
 		 const struct prusim_ops *ops, void *ctx);
 void prusim_core_reset(struct prusim *s, unsigned int core, u32 pc);
+void prusim_icss_reset(struct prusim *s);
 void prusim_core_enable(struct prusim *s, unsigned int core, bool enable);
 int prusim_write_iram(struct prusim *s, unsigned int core, u32 offset,
 		      const void *buf, size_t len);

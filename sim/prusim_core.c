@@ -1480,6 +1480,44 @@ void prusim_init(struct prusim *s, const struct prusim_config *cfg,
 }
 
 /**
+ * prusim_icss_reset() - the PRU-ICSS's local reset (PRCM's PRU_ICSS_LRST)
+ * @s: simulator
+ *
+ * The subsystem goes back to the state prusim_init() leaves it in: both
+ * cores disabled at pc 0 with their registers, instruction and data RAMs
+ * cleared, shared RAM, the scratchpad, the INTC, the IEP and CFG at their
+ * reset values, and the events on their way to the INTC dropped.  What
+ * lies outside the subsystem is kept: the time, the configuration and
+ * callbacks, the GPIO banks, and the GPIO writes and OCP stores already
+ * on the interconnect (they land when they are due).
+ */
+void prusim_icss_reset(struct prusim *s)
+{
+	unsigned int i, n = 0;
+
+	for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+		memset(&s->core[i], 0, sizeof(s->core[i]));
+		core_init(s, i);
+	}
+	memset(s->shared, 0, sizeof(s->shared));
+	memset(s->spad, 0, sizeof(s->spad));
+	for (i = 0; i < PRUSIM_SPAD_BANKS; i++)
+		s->spad_xout[i] = PRUSIM_NEVER;
+	prusim_icss_regs_reset(s);
+	for (i = 0; i < s->queued; i++) {
+		if (s->queue[i].kind != PRUSIM_TIMED_EVENT)
+			s->queue[n++] = s->queue[i];
+	}
+	s->queued = n;
+	s->next_event = n ? s->queue[0].cycle : PRUSIM_NEVER;
+	s->skip_pending = false;
+	s->waiting = false;
+	s->stop_run = true;
+	s->attention = 0;
+	s->epoch++;
+}
+
+/**
  * prusim_core_reset() - soft reset of one core (CONTROL.SOFT_RST_N = 0)
  * @s: simulator
  * @core: 0 or 1

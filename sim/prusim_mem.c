@@ -58,18 +58,13 @@ void prusim_ctrl_update_ctable(struct prusim_core *c)
 }
 
 /**
- * prusim_mem_reset() - put the subsystem peripherals in their reset state
+ * prusim_icss_regs_reset() - put the INTC, the IEP and CFG in their reset state
  * @s: simulator
  */
-void prusim_mem_reset(struct prusim *s)
+void prusim_icss_regs_reset(struct prusim *s)
 {
-	unsigned int i;
-
 	memset(&s->intc, 0, sizeof(s->intc));
 	memset(&s->iep, 0, sizeof(s->iep));
-	memset(s->gpio, 0, sizeof(s->gpio));
-	for (i = 0; i < PRUSIM_GPIO_BANKS; i++)
-		s->gpio[i].oe = GPIO_OE_RESET;
 	memset(s->cfg_regs, 0, sizeof(s->cfg_regs));
 	s->syscfg = PRUSIM_SYSCFG_RESET;
 	s->gpcfg[0] = 0;
@@ -77,6 +72,20 @@ void prusim_mem_reset(struct prusim *s)
 	s->cfg_regs[PRUSIM_CFG_REG(PRUSIM_CFG_CGR)] = CFG_CGR_RESET;
 	s->cfg_regs[PRUSIM_CFG_REG(PRUSIM_CFG_MII_RT)] = CFG_MII_RT_RESET;
 	s->iep.since = s->now;
+}
+
+/**
+ * prusim_mem_reset() - put the subsystem peripherals in their reset state
+ * @s: simulator
+ */
+void prusim_mem_reset(struct prusim *s)
+{
+	unsigned int i;
+
+	prusim_icss_regs_reset(s);
+	memset(s->gpio, 0, sizeof(s->gpio));
+	for (i = 0; i < PRUSIM_GPIO_BANKS; i++)
+		s->gpio[i].oe = GPIO_OE_RESET;
 	s->gpio_free = 0;
 	s->queued = 0;
 	s->next_event = PRUSIM_NEVER;

@@ -118,6 +118,7 @@ int prusim_mem_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf,
 int prusim_mem_write(struct prusim *s, struct prusim_core *c, u32 addr,
 		     const u8 *buf, u32 len, struct prusim_access *acc);
 void prusim_mem_reset(struct prusim *s);
+void prusim_icss_regs_reset(struct prusim *s);
 void prusim_ctrl_update_ctable(struct prusim_core *c);
 void prusim_intc_event(struct prusim *s, unsigned int event);
 void prusim_intc_map(struct prusim *s, unsigned int event, unsigned int channel,

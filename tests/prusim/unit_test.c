@@ -4,7 +4,8 @@
  * ELF loader (accepts, rejects, resource table, .pru_irq_map), host access
  * and CTRL semantics, events raised by the embedder, the host interrupt
  * callback, how often the input callback is called and the shared stimulus
- * parser and lookup (sim/prusim_stim.c), posted OCP stores.
+ * parser and lookup (sim/prusim_stim.c), posted OCP stores, the PRU-ICSS's
+ * local reset.
  *
  * usage: unit_test FW.elf RSC_OFFSET RSC_SIZE
  *   FW.elf is a firmware with a .resource_table and a two-entry
@@ -1085,6 +1086,62 @@ static void posted_irq(void *ctx, u64 cycle, unsigned int host __always_unused, 
 }
 
 /*
+ * The PRU-ICSS's local reset: PRU1 runs, the INTC routes an event, the
+ * RAMs and CFG hold values and a GPIO bank drives a line; after
+ * prusim_icss_reset() the subsystem is as prusim_init() leaves it and the
+ * GPIO bank, outside it, keeps its state.
+ */
+static void test_icss_reset(void)
+{
+	static const u32 prog[] = { SLP_1, HALT };
+	struct prusim *s = new_sim(NULL, NULL);
+	struct prusim_status st;
+	u32 control = 0x2, v = 0xfeedbeef, cmr = 0, syscfg = 0, gpio, oe;
+	unsigned int i;
+	bool ram_clear = true;
+	u8 b = 0;
+
+	put_words(s, 1, prog, 2);
+	prusim_host_write(s, 0x24000, &control, 4);		/* PRU1 CONTROL: EN */
+	prusim_run(s, 10);
+	prusim_host_write(s, 0x2004, &v, 4);			/* PRU1 data RAM */
+	prusim_host_write(s, 0x10100, &v, 4);			/* shared RAM */
+	v = 0;
+	prusim_host_write(s, 0x26004, &v, 4);			/* SYSCFG */
+	intc_route(s, 21, 3, 1);
+	prusim_gpio_write(s, 1, PRUSIM_GPIO_OE, 0xefffffff);
+	prusim_gpio_write(s, 1, PRUSIM_GPIO_SETDATAOUT, 1u << 28);
+	prusim_raise_event(s, 21);
+	prusim_run(s, 10);
+	check(prusim_host_pending(s, 1), "icss-reset-before", "host 1 not pending");
+
+	prusim_icss_reset(s);
+	prusim_get_status(s, 1, &st);
+	prusim_host_read(s, 0x20400 + 21, &b, 1);			/* CMR byte */
+	cmr = b;
+	prusim_host_read(s, 0x26004, &syscfg, 4);
+	for (i = 0; i < PRUSIM_IRAM_WORDS && ram_clear; i++)
+		ram_clear = !s->core[1].iram[i];
+	ram_clear = ram_clear && !prusim_get_le32(s->core[1].dram + 4) &&
+		    !prusim_get_le32(s->shared + 0x100);
+	gpio = prusim_gpio_read(s, 1, PRUSIM_GPIO_DATAOUT);
+	oe = prusim_gpio_read(s, 1, PRUSIM_GPIO_OE);
+	check(st.state == PRUSIM_DISABLED && st.pc == 0 && !prusim_host_pending(s, 1) &&
+	      !cmr && syscfg == 0x1a && ram_clear, "icss-reset",
+	      "state %d pc %u pending %d CMR 0x%x SYSCFG 0x%x RAMs %s", st.state, st.pc,
+	      prusim_host_pending(s, 1), cmr, syscfg, ram_clear ? "clear" : "kept");
+	check(gpio == 1u << 28 && oe == 0xefffffff, "icss-reset-keeps-gpio",
+	      "DATAOUT 0x%08x OE 0x%08x", gpio, oe);
+	control = 0x2;
+	put_words(s, 1, prog + 1, 1);
+	prusim_host_write(s, 0x24000, &control, 4);
+	prusim_run(s, 10);
+	prusim_get_status(s, 1, &st);
+	check(st.state == PRUSIM_HALTED, "icss-reset-runs-again", "state %d", st.state);
+	free(s);
+}
+
+/*
  * With ocp_write_delay 200 a store to DDR issued in cycle 3 lands in 203 and
  * the next (cycle 5) in 205; the event strobed between them reaches the ARM
  * in cycle 5, long before its data.  A load issued in cycle 6 sees the
@@ -1182,5 +1239,6 @@ int main(int argc, char **argv)
 	test_stim_fuzz();
 	test_unmodelled();
 	test_posted();
+	test_icss_reset();
 	return failures ? 1 : 0;
 }
