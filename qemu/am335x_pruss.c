@@ -13,6 +13,9 @@
  *   0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
  *               GPIO banks 0..3 (gpio-omap): OE and the data registers are
  *               the simulator's, the rest is stored here
+ *   0x44e00c00  PRCM's PRM_PER: RM_PER_RSTCTRL's PRU_ICSS_LRST holds the
+ *               PRU-ICSS in reset (asserted at power-on; ti-sysc releases
+ *               it, and asserts it whenever the PRU-ICSS's module idles)
  *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
  *               or a GPIO output reaches the pin trace only through a pad
  *               in its mode, an input R31 or DATAIN only through one that
@@ -22,8 +25,8 @@
  *               sim/prusim_port.h; a guest driver, prukit's
  *               tests/kmod/prusim_port.c, shows them in debugfs)
  *
- * This file has the PRU-ICSS, its interrupts, the simulation thread and the
- * device; am335x_pruss_pins.c the pins, GPIO banks and pads;
+ * This file has the PRU-ICSS, its reset, its interrupts, the simulation
+ * thread and the device; am335x_pruss_pins.c the pins, GPIO banks and pads;
  * am335x_pruss_port.c the test port; am335x_pruss_internal.h what they
  * share.
  *
@@ -577,6 +580,12 @@ static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
     uint32_t v = 0;
 
     pruss_lock(p);
+    if (pruss_icss_in_reset(p)) {
+        pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx
+                    " while PRCM holds it in reset", size, addr);
+        pruss_unlock(p, false);
+        return 0;
+    }
     p->ocp_drained += prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, false)) {
         pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx,
@@ -605,6 +614,12 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
 
     trace_am335x_pruss_write(addr, size, v);
     pruss_lock(p);
+    if (pruss_icss_in_reset(p)) {
+        pruss_unimp(p, "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx
+                    " (0x%x) while PRCM holds it in reset", size, addr, v);
+        pruss_unlock(p, false);
+        return;
+    }
     p->ocp_drained += prusim_ocp_drain(p->s);
     if (!prusim_host_modelled(addr, size, true)) {
         pruss_unimp(p,
@@ -646,6 +661,81 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
 static const MemoryRegionOps pruss_ops = {
     .read = pruss_read,
     .write = pruss_write,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 1, .max_access_size = 4 },
+    .impl = { .min_access_size = 1, .max_access_size = 4 },
+};
+
+/* ------------------------------------------------------------------ */
+/* PRCM: the PRU-ICSS's local reset                                    */
+
+/*
+ * PRU_ICSS_LRST asserted: the PRU-ICSS goes to its reset state, its R30
+ * outputs low; the GPIO banks, outside it, keep theirs.  The PRUs' stores
+ * on their way to RAM land first.  On a board ti-sysc asserts it through
+ * omap_prm whenever the PRU-ICSS's target module idles (pruss unbound).
+ */
+static void icss_reset(AM335xPrussState *p)
+{
+    unsigned int i;
+
+    for (i = 0; i < PRUSIM_NUM_CORES; i++) {
+        struct prusim_status st;
+
+        prusim_get_status(p->s, i, &st);
+        p->reset_states[i] = st.state;
+    }
+    flight_land(p);
+    p->ocp_drained += prusim_ocp_drain(p->s);
+    prusim_icss_reset(p->s);
+    p->r30 = 0;
+    pruss_pads_changed(p);
+    p->in_service = 0;
+    p->taken = 0;
+    memset(p->strobe, 0, sizeof(p->strobe));
+    memset(p->stopped_reported, 0, sizeof(p->stopped_reported));
+    p->icss_resets++;
+    pruss_update_irqs(p);
+}
+
+static uint64_t prm_read(void *opaque, hwaddr off, unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = 0;
+
+    pruss_lock(p);
+    if (off == PRM_RSTCTRL && size == 4) {
+        v = p->prm_rstctrl;
+    } else {
+        pruss_unimp(p, "PRM_PER read of %u bytes at 0x%02" HWADDR_PRIx
+                    " (not modelled)", size, off);
+    }
+    pruss_unlock(p, false);
+    return v;
+}
+
+static void prm_write(void *opaque, hwaddr off, uint64_t val,
+                      unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    uint32_t v = val;
+
+    pruss_lock(p);
+    if (off != PRM_RSTCTRL || size != 4 || (v & ~PRM_ICSS_LRST)) {
+        pruss_unimp(p, "PRM_PER write of %u bytes at 0x%02" HWADDR_PRIx
+                    " (0x%x, not modelled)", size, off, v);
+    } else {
+        if (v & ~p->prm_rstctrl & PRM_ICSS_LRST) {
+            icss_reset(p);
+        }
+        p->prm_rstctrl = v;
+    }
+    pruss_unlock(p, true);
+}
+
+static const MemoryRegionOps prm_ops = {
+    .read = prm_read,
+    .write = prm_write,
     .endianness = DEVICE_LITTLE_ENDIAN,
     .valid = { .min_access_size = 1, .max_access_size = 4 },
     .impl = { .min_access_size = 1, .max_access_size = 4 },
@@ -888,6 +978,10 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->ddr_jitter = p->ddr_jitter_reset;
     pruss_jitter_seed(p);
     p->hold_mode = p->hold_mode_reset;
+    /* as on a board: held in reset until Linux releases it (ti-sysc) */
+    p->prm_rstctrl = PRM_ICSS_LRST;
+    p->icss_resets = 0;
+    memset(p->reset_states, PRUSIM_DISABLED, sizeof(p->reset_states));
     p->runnable = false;
     p->irq_dirty = true;
 }
@@ -953,6 +1047,9 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
     memory_region_init_io(&p->port_mr, OBJECT(p), &pruss_port_ops, p,
                           "am335x-pruss.port", PORT_SIZE);
     sysbus_init_mmio(sbd, &p->port_mr);
+    memory_region_init_io(&p->prm_mr, OBJECT(p), &prm_ops, p,
+                          "am335x-pruss.prm-per", PRM_PER_SIZE);
+    sysbus_init_mmio(sbd, &p->prm_mr);
     memory_region_init_ram(&p->port_buf, OBJECT(p), "am335x-pruss.port-buf",
                            PORT_BUF_SIZE, &err);
     if (err) {
@@ -1073,6 +1170,7 @@ DeviceState *am335x_pruss_create(qemu_irq *host_irq, qemu_irq *gpio_irq)
     }
     sysbus_mmio_map(sbd, n++, PADS_BASE);
     sysbus_mmio_map(sbd, n++, PORT_BASE);
+    sysbus_mmio_map(sbd, n++, PRM_PER_BASE);
     sysbus_mmio_map(sbd, n++, PORT_BUF_BASE);
     for (i = 0; i < NUM_CATCH; i++) {
         sysbus_mmio_map_overlap(sbd, n++, catch_regions[i].base, -1000);

@@ -30,6 +30,10 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 #define PADS_NUM                142             /* conf_* at 0x800..0xa34 */
 #define PADS_SIZE               (4 * PADS_NUM)
 #define GPIO_SIZE               0x1000
+#define PRM_PER_BASE            0x44e00c00      /* PRCM's PRM_PER */
+#define PRM_PER_SIZE            0x100
+#define PRM_RSTCTRL             0x00            /* RM_PER_RSTCTRL */
+#define PRM_ICSS_LRST           0x2             /* PRU_ICSS_LRST */
 
 #define NUM_CATCH               3       /* catch_regions[] */
 
@@ -128,6 +132,7 @@ struct AM335xPrussState {
     MemoryRegion pads_mr;
     MemoryRegion port_mr;
     MemoryRegion port_buf;
+    MemoryRegion prm_mr;
     MemoryRegion catch_mr[NUM_CATCH];
     qemu_irq host_irq[AM335X_PRUSS_NUM_HOST_IRQS];
     qemu_irq gpio_irq[AM335X_PRUSS_NUM_GPIO_IRQS];
@@ -196,6 +201,11 @@ struct AM335xPrussState {
     uint64_t gpio_gated;            /* ... of them, to a bank gpio-omap gated */
     bool arm_gpio;                  /* in an ARM store to a GPIO bank */
 
+    /* PRCM: RM_PER_RSTCTRL, and how often it reset the PRU-ICSS */
+    uint32_t prm_rstctrl;
+    uint64_t icss_resets;
+    uint8_t reset_states[PRUSIM_NUM_CORES]; /* the cores' as it came */
+
     /* GPIO registers the simulator does not keep */
     uint32_t gpio_reg[PRUSIM_GPIO_BANKS][GPIO_NUM_STORED];
 
@@ -243,6 +253,12 @@ struct AM335xPrussState {
 static inline int64_t pruss_now_ns(void)
 {
     return qemu_clock_get_ns(QEMU_CLOCK_REALTIME);
+}
+
+/* PRCM holds the PRU-ICSS in its local reset */
+static inline bool pruss_icss_in_reset(AM335xPrussState *p)
+{
+    return p->prm_rstctrl & PRM_ICSS_LRST;
 }
 
 /*

@@ -110,6 +110,34 @@ static const char *const state_name[] = {
     [PRUSIM_STOPPED] = "stopped",
 };
 
+/* The PRU-ICSS's RAMs, as the ARM sees them: instruction, data, shared */
+static const struct {
+    uint32_t off;
+    uint32_t size;
+} icss_rams[] = {
+    { 0x34000, 0x2000 }, { 0x38000, 0x2000 },
+    { 0x00000, 0x2000 }, { 0x02000, 0x2000 }, { 0x10000, 0x3000 },
+};
+
+/* How many 32-bit words of the RAMs are not 0 (a reset clears them all) */
+static unsigned int icss_ram_words(AM335xPrussState *p)
+{
+    uint32_t chunk[64];
+    unsigned int i, n = 0;
+    uint32_t off, w;
+
+    for (i = 0; i < ARRAY_SIZE(icss_rams); i++) {
+        for (off = 0; off < icss_rams[i].size; off += sizeof(chunk)) {
+            prusim_host_read(p->s, icss_rams[i].off + off, chunk,
+                             sizeof(chunk));
+            for (w = 0; w < ARRAY_SIZE(chunk); w++) {
+                n += chunk[w] != 0;
+            }
+        }
+    }
+    return n;
+}
+
 static uint32_t port_stats(AM335xPrussState *p)
 {
     uint64_t enabled = (uint64_t)pruss_icss_read32(p, ICSS_INTC_ESR(1)) << 32 |
@@ -132,6 +160,11 @@ static uint32_t port_stats(AM335xPrussState *p)
                  st.pc * 4, st.insns, st.stalls,
                  st.reason[0] ? st.reason : "-");
     }
+    port_add(p, &len, "icss %s resets %" PRIu64 " ram_words %u"
+             " cores_at_last_reset %s %s\n",
+             pruss_icss_in_reset(p) ? "reset" : "running", p->icss_resets,
+             icss_ram_words(p), state_name[p->reset_states[0]],
+             state_name[p->reset_states[1]]);
     port_add(p, &len, "trace_events %u trace_dropped %" PRIu64
              " trace_origin %" PRIu64
              " trace_until %" PRIu64 "\n", p->trace_count, p->trace_dropped,
