@@ -92,6 +92,19 @@ pru_state() {
 	sed -n "s/^pru$1 state \([a-z]*\) .*/\1/p" "$(sim_dir)/stats"
 }
 
+# pru_state_unreset N - the state PRU N was left in by its drivers: its
+# state, or while PRCM holds the PRU-ICSS in reset (ti-sysc asserts it once
+# pruss is unbound, and the reset stops every core), its state as the reset
+# came (the model's "icss ... cores_at_last_reset S0 S1")
+pru_state_unreset() {
+	local icss
+	icss=$(sed -n "s/^icss //p" "$(sim_dir)/stats")
+	case $icss in
+	reset\ *) echo "$icss" | cut -d' ' -f$((7 + $1)) ;;
+	*) pru_state "$1" ;;
+	esac
+}
+
 # wait_pru_state N STATE [SECONDS] - until the simulator reports STATE
 wait_pru_state() {
 	local i=0
