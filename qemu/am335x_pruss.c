@@ -16,6 +16,9 @@
  *   0x44e00c00  PRCM's PRM_PER: RM_PER_RSTCTRL's PRU_ICSS_LRST holds the
  *               PRU-ICSS in reset (asserted at power-on; ti-sysc releases
  *               it, and asserts it whenever the PRU-ICSS's module idles)
+ *   0x44e00000  PRCM's CM_PER and CM_WKUP: the GPIO banks' CLKCTRL registers
+ *               (disabled at power-on; ti-sysc enables a bank's while its
+ *               module is in use, and a gated bank takes no access)
  *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
  *               or a GPIO output reaches the pin trace only through a pad
  *               in its mode, an input R31 or DATAIN only through one that
@@ -26,9 +29,9 @@
  *               tests/kmod/prusim_port.c, shows them in debugfs)
  *
  * This file has the PRU-ICSS, its reset, its interrupts, the simulation
- * thread and the device; am335x_pruss_pins.c the pins, GPIO banks and pads;
- * am335x_pruss_port.c the test port; am335x_pruss_internal.h what they
- * share.
+ * thread and the device; am335x_pruss_pins.c the pins, GPIO banks (and
+ * their clocks) and pads; am335x_pruss_port.c the test port;
+ * am335x_pruss_internal.h what they share.
  *
  * Accesses to the rest of L4_WKUP, L4_PER and L4_FAST, and to registers of
  * the blocks above that are not modelled, are logged (-d unimp) and counted
@@ -981,6 +984,9 @@ static void pruss_reset_state(AM335xPrussState *p)
     /* as on a board: held in reset until Linux releases it (ti-sysc) */
     p->prm_rstctrl = PRM_ICSS_LRST;
     p->icss_resets = 0;
+    /* the TRM's reset values: every bank's clocks disabled */
+    memset(p->gpio_clkctrl, 0, sizeof(p->gpio_clkctrl));
+    p->gpio_clock_gatings = 0;
     memset(p->reset_states, PRUSIM_DISABLED, sizeof(p->reset_states));
     p->runnable = false;
     p->irq_dirty = true;
@@ -1050,6 +1056,9 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
     memory_region_init_io(&p->prm_mr, OBJECT(p), &prm_ops, p,
                           "am335x-pruss.prm-per", PRM_PER_SIZE);
     sysbus_init_mmio(sbd, &p->prm_mr);
+    memory_region_init_io(&p->cm_mr, OBJECT(p), &pruss_cm_ops, p,
+                          "am335x-pruss.cm", CM_SIZE);
+    sysbus_init_mmio(sbd, &p->cm_mr);
     memory_region_init_ram(&p->port_buf, OBJECT(p), "am335x-pruss.port-buf",
                            PORT_BUF_SIZE, &err);
     if (err) {
@@ -1171,6 +1180,7 @@ DeviceState *am335x_pruss_create(qemu_irq *host_irq, qemu_irq *gpio_irq)
     sysbus_mmio_map(sbd, n++, PADS_BASE);
     sysbus_mmio_map(sbd, n++, PORT_BASE);
     sysbus_mmio_map(sbd, n++, PRM_PER_BASE);
+    sysbus_mmio_map(sbd, n++, CM_BASE);
     sysbus_mmio_map(sbd, n++, PORT_BUF_BASE);
     for (i = 0; i < NUM_CATCH; i++) {
         sysbus_mmio_map_overlap(sbd, n++, catch_regions[i].base, -1000);

@@ -2,8 +2,9 @@
 /*
  * AM335x PRU-ICSS for prukit's test VM: the device's state and what its
  * parts share (am335x_pruss.c: the PRU-ICSS, its interrupts and the
- * simulation thread; am335x_pruss_pins.c: the pins, GPIO banks and pads;
- * am335x_pruss_port.c: the test port).  Private to hw/misc/am335x_pruss*.c.
+ * simulation thread; am335x_pruss_pins.c: the pins, GPIO banks (and their
+ * clocks) and pads; am335x_pruss_port.c: the test port).  Private to
+ * hw/misc/am335x_pruss*.c.
  */
 #ifndef HW_MISC_AM335X_PRUSS_INTERNAL_H
 #define HW_MISC_AM335X_PRUSS_INTERNAL_H
@@ -34,6 +35,14 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 #define PRM_PER_SIZE            0x100
 #define PRM_RSTCTRL             0x00            /* RM_PER_RSTCTRL */
 #define PRM_ICSS_LRST           0x2             /* PRU_ICSS_LRST */
+#define CM_BASE                 0x44e00000      /* PRCM's CM_PER, CM_WKUP */
+#define CM_SIZE                 0x500
+#define CM_MODULEMODE           0x3             /* a CLKCTRL's bits 1:0 */
+#define CM_MODULEMODE_ENABLE    0x2
+#define CM_IDLEST_SHIFT         16              /* bits 17:16, read-only */
+#define CM_IDLEST               (0x3u << CM_IDLEST_SHIFT)
+#define CM_IDLEST_DISABLED      0x3
+#define CM_GPIO_OPTFCLKEN       (1u << 18)      /* the debounce clock */
 
 #define NUM_CATCH               3       /* catch_regions[] */
 
@@ -48,6 +57,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 /* GPIO bank registers (SPRUH73 chapter 25) */
 #define GPIO_REVISION           0x000
 #define GPIO_SYSCONFIG          0x010
+#define GPIO_SYSCONFIG_SOFTRESET 0x2    /* self-clearing */
 #define GPIO_EOI                0x020
 #define GPIO_IRQSTATUS_RAW(n)   (0x024 + 4 * (n))
 #define GPIO_IRQSTATUS(n)       (0x02c + 4 * (n))
@@ -133,6 +143,7 @@ struct AM335xPrussState {
     MemoryRegion port_mr;
     MemoryRegion port_buf;
     MemoryRegion prm_mr;
+    MemoryRegion cm_mr;
     MemoryRegion catch_mr[NUM_CATCH];
     qemu_irq host_irq[AM335X_PRUSS_NUM_HOST_IRQS];
     qemu_irq gpio_irq[AM335X_PRUSS_NUM_GPIO_IRQS];
@@ -205,6 +216,9 @@ struct AM335xPrussState {
     uint32_t prm_rstctrl;
     uint64_t icss_resets;
     uint8_t reset_states[PRUSIM_NUM_CORES]; /* the cores' as it came */
+    /* PRCM: the GPIO banks' CLKCTRL (MODULEMODE, OPTFCLKEN), clock gatings */
+    uint32_t gpio_clkctrl[PRUSIM_GPIO_BANKS];
+    uint64_t gpio_clock_gatings;
 
     /* GPIO registers the simulator does not keep */
     uint32_t gpio_reg[PRUSIM_GPIO_BANKS][GPIO_NUM_STORED];
@@ -262,13 +276,26 @@ static inline bool pruss_icss_in_reset(AM335xPrussState *p)
 }
 
 /*
- * gpio-omap disables a bank's module (GPIO_CTRL.DISABLEMODULE: its clocks
- * are gated) when the bank's last requested line is freed, and enables it
- * when one is requested again.
+ * PRCM clocks a GPIO bank while its CLKCTRL's MODULEMODE is "enabled": on a
+ * board ti-sysc enables it as the bank's target module resumes (a line of
+ * the bank is requested, or gpio-omap probes) and disables it as the module
+ * idles.
+ */
+static inline bool pruss_gpio_clocked(AM335xPrussState *p, unsigned int bank)
+{
+    return (p->gpio_clkctrl[bank] & CM_MODULEMODE) == CM_MODULEMODE_ENABLE;
+}
+
+/*
+ * A bank is gated while PRCM does not clock it, or while gpio-omap
+ * disables its module (GPIO_CTRL.DISABLEMODULE: the bank's own clocks
+ * gated), as it does when the bank's last requested line is freed (and it
+ * enables it when one is requested again).
  */
 static inline bool pruss_gpio_gated(AM335xPrussState *p, unsigned int bank)
 {
-    return p->gpio_reg[bank][GPIO_CTRL / 4] & GPIO_CTRL_DISABLEMODULE;
+    return !pruss_gpio_clocked(p, bank) ||
+           (p->gpio_reg[bank][GPIO_CTRL / 4] & GPIO_CTRL_DISABLEMODULE);
 }
 
 /* am335x_pruss.c */
@@ -285,7 +312,7 @@ uint32_t pruss_icss_read32(AM335xPrussState *p, uint32_t off);
 uint32_t pruss_iep_count(AM335xPrussState *p);
 void pruss_stim_free(struct prusim_stim *st);
 
-/* am335x_pruss_pins.c: the pins, GPIO banks and pads */
+/* am335x_pruss_pins.c: the pins, GPIO banks (and their clocks) and pads */
 
 /* Recompute what reaches a pin from the pad registers (reset) */
 void pruss_pads_masks(AM335xPrussState *p);
@@ -297,6 +324,7 @@ void pruss_gpio_oe_cb(void *ctx, u64 cycle, unsigned int bank, u32 oe);
 /* The test port's "pads" file, in the reply buffer; its length */
 uint32_t pruss_pads_text(AM335xPrussState *p);
 extern const MemoryRegionOps pruss_gpio_ops[PRUSIM_GPIO_BANKS];
+extern const MemoryRegionOps pruss_cm_ops;
 extern const MemoryRegionOps pruss_pads_ops;
 
 /* am335x_pruss_port.c: the test port */

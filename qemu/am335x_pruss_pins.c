@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
  * AM335x PRU-ICSS for prukit's test VM: the pins - the trace of what
- * reaches them, the control module's pad registers and the GPIO banks
- * (see am335x_pruss.c and prukit's Documentation/qemu-pruss.rst).
+ * reaches them, the control module's pad registers, the GPIO banks and
+ * their clocks in PRCM (see am335x_pruss.c and prukit's
+ * Documentation/qemu-pruss.rst).
  */
 
 #include "qemu/osdep.h"
@@ -299,7 +300,10 @@ static uint64_t gpio_read(void *opaque, hwaddr off, unsigned int size,
     shift = 8 * (off & 3);
     off &= ~(hwaddr)3;
     pruss_lock(p);
-    if (gpio_sim_reg(off)) {
+    if (!pruss_gpio_clocked(p, bank)) {
+        pruss_unimp(p, "GPIO%u read at 0x%03" HWADDR_PRIx
+                    " while PRCM gates its clocks", bank, off);
+    } else if (gpio_sim_reg(off)) {
         v = prusim_gpio_read(p->s, bank,
                              off == PRUSIM_GPIO_OE ||
                              off == PRUSIM_GPIO_DATAIN ?
@@ -321,6 +325,20 @@ static uint64_t gpio_read(void *opaque, hwaddr off, unsigned int size,
     return extract32(v, shift, 8 * size);
 }
 
+/*
+ * SYSCONFIG's SOFTRESET (ti-sysc resets each bank as it probes its target
+ * module): the bank's registers to their reset values, every line an input
+ * and DATAOUT 0; RESETDONE (SYSSTATUS) at once.
+ */
+static void gpio_softreset(AM335xPrussState *p, unsigned int bank)
+{
+    p->arm_gpio = true;
+    prusim_gpio_write(p->s, bank, PRUSIM_GPIO_OE, 0xffffffff);
+    prusim_gpio_write(p->s, bank, PRUSIM_GPIO_DATAOUT, 0);
+    p->arm_gpio = false;
+    memset(p->gpio_reg[bank], 0, sizeof(p->gpio_reg[bank]));
+}
+
 static void gpio_write(void *opaque, hwaddr off, uint64_t val,
                        unsigned int size, unsigned int bank)
 {
@@ -332,6 +350,12 @@ static void gpio_write(void *opaque, hwaddr off, uint64_t val,
     if (size != 4 || off & 3) {
         pruss_unimp(p, "GPIO%u write of %u bytes at 0x%03" HWADDR_PRIx,
                     bank, size, off);
+    } else if (!pruss_gpio_clocked(p, bank)) {
+        pruss_unimp(p, "GPIO%u write at 0x%03" HWADDR_PRIx
+                    " (0x%x) while PRCM gates its clocks", bank, off, v);
+    } else if (off == GPIO_SYSCONFIG && (v & GPIO_SYSCONFIG_SOFTRESET)) {
+        gpio_softreset(p, bank);
+        p->gpio_reg[bank][off / 4] = v & ~GPIO_SYSCONFIG_SOFTRESET;
     } else if (gpio_sim_reg(off) && off != PRUSIM_GPIO_DATAIN) {
         p->arm_gpio = true;
         prusim_gpio_write(p->s, bank, off, v);
@@ -445,6 +469,85 @@ static void pads_write(void *opaque, hwaddr off, uint64_t val,
 const MemoryRegionOps pruss_pads_ops = {
     .read = pads_read,
     .write = pads_write,
+    .endianness = DEVICE_LITTLE_ENDIAN,
+    .valid = { .min_access_size = 1, .max_access_size = 4 },
+    .impl = { .min_access_size = 1, .max_access_size = 4 },
+};
+
+/* ------------------------------------------------------------------ */
+/* PRCM: the GPIO banks' clocks (CM_WKUP's and CM_PER's CLKCTRL)      */
+
+/* each bank's CLKCTRL, from CM_PER's base (CM_WKUP is at 0x400) */
+static const hwaddr cm_gpio_clkctrl[PRUSIM_GPIO_BANKS] = {
+    0x408, 0x0ac, 0x0b0, 0x0b4,
+};
+
+static int cm_bank(hwaddr off)
+{
+    unsigned int i;
+
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        if (cm_gpio_clkctrl[i] == off) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* IDLEST follows MODULEMODE at once: fully functional, or disabled */
+static uint64_t cm_read(void *opaque, hwaddr off, unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    int bank = cm_bank(off);
+    uint32_t v = 0;
+
+    pruss_lock(p);
+    if (bank < 0 || size != 4) {
+        pruss_unimp(p, "PRCM CM read of %u bytes at 0x%03" HWADDR_PRIx
+                    " (not modelled)", size, off);
+    } else {
+        v = p->gpio_clkctrl[bank];
+        if (!pruss_gpio_clocked(p, bank)) {
+            v |= CM_IDLEST_DISABLED << CM_IDLEST_SHIFT;
+        }
+    }
+    pruss_unlock(p, false);
+    return v;
+}
+
+/*
+ * MODULEMODE "enabled" (2) clocks the bank, "disabled" (0) gates it: a
+ * PRU's store to it is then lost (gpio_gated_writes), an ARM access is an
+ * unmodelled one, and its pins keep what they showed until it is clocked
+ * again.  IDLEST is read-only; the reserved modes are not modelled.
+ */
+static void cm_write(void *opaque, hwaddr off, uint64_t val,
+                     unsigned int size)
+{
+    AM335xPrussState *p = opaque;
+    int bank = cm_bank(off);
+    uint32_t v = val & ~CM_IDLEST, mode = v & CM_MODULEMODE;
+
+    pruss_lock(p);
+    if (bank < 0 || size != 4 ||
+        (v & ~(CM_MODULEMODE | CM_GPIO_OPTFCLKEN)) ||
+        (mode != 0 && mode != CM_MODULEMODE_ENABLE)) {
+        pruss_unimp(p, "PRCM CM write of %u bytes at 0x%03" HWADDR_PRIx
+                    " (0x%x, not modelled)", size, off, v);
+    } else {
+        if (pruss_gpio_clocked(p, bank) && mode != CM_MODULEMODE_ENABLE) {
+            p->gpio_clock_gatings++;
+        }
+        p->gpio_clkctrl[bank] = v;
+        gpio_show(p, p->s->now, bank);      /* clocked: the pins catch up */
+    }
+    p->runnable = true;
+    pruss_unlock(p, true);
+}
+
+const MemoryRegionOps pruss_cm_ops = {
+    .read = cm_read,
+    .write = cm_write,
     .endianness = DEVICE_LITTLE_ENDIAN,
     .valid = { .min_access_size = 1, .max_access_size = 4 },
     .impl = { .min_access_size = 1, .max_access_size = 4 },

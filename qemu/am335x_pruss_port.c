@@ -181,6 +181,12 @@ static uint32_t port_stats(AM335xPrussState *p)
         }
     }
     port_add(p, &len, "\n");
+    port_add(p, &len, "gpio_clocks");
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        port_add(p, &len, " gpio%u %s", i,
+                 pruss_gpio_clocked(p, i) ? "on" : "off");
+    }
+    port_add(p, &len, " gatings %" PRIu64 "\n", p->gpio_clock_gatings);
     port_add(p, &len, "unmuxed_outputs");
     for (i = 0; i < 64; i++) {
         if ((p->unmuxed_seen >> i) & 1) {
