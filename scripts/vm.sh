@@ -230,11 +230,13 @@ make_initrd() {
 	for d in "$PRUKIT_TOP/out/kernels/$tag-board" "$PRUKIT_TOP/out/kernels/$tag-pru-kit" \
 		"$PRUKIT_TOP/out/kernels/$tag-rpmsg-kit" "$PRUKIT_TOP/out/kernels/$tag-counter-kit"; do
 		# bare: the kernel's PRU drivers (and rpmsg and counter), as a board's
-		# kernel package has them, not prukit's modules - but PRCM's stand-in,
-		# which the board's tree needs (tests/kmod/prm_standin.c)
+		# kernel package has them, not prukit's modules - but PRCM's
+		# stand-ins, which the board's tree needs (tests/kmod/prm_standin.c,
+		# clkctrl_standin.c)
 		if [ $bare = 1 ] && [ "$d" = "$PRUKIT_TOP/out/kernels/$tag-board" ]; then
-			cp "$d/tests/kmod/prm_standin.ko" "$mods/updates/" ||
-				die "no prm_standin.ko for $kver (scripts/kernels.sh --board)"
+			cp "$d/tests/kmod/prm_standin.ko" "$d/tests/kmod/clkctrl_standin.ko" \
+				"$mods/updates/" ||
+				die "no PRCM stand-ins for $kver (scripts/kernels.sh --board)"
 			continue
 		fi
 		[ -d "$d" ] && find "$d" -name '*.ko' -exec cp -t "$mods/updates/" {} +
@@ -262,7 +264,7 @@ make_initrd() {
 	if [ $bare = 1 ]; then
 		{
 			echo "PRUKIT_MODE=$mode"
-			echo "PRUKIT_MODULES='${PRUKIT_DEB_MODULES:-prm_standin pruss irq_pruss_intc pru_rproc}'"
+			echo "PRUKIT_MODULES='${PRUKIT_DEB_MODULES:-prm_standin clkctrl_standin pruss irq_pruss_intc pru_rproc}'"
 			echo "PRUKIT_KVER='$kver'"
 			echo "PRUKIT_SERIES='$series'"
 		} >"$stage/prukit/config"
@@ -458,7 +460,7 @@ second_boot() {
 # port.  Not the test consumer: it holds PRU0 as a prukit driver does,
 # which locks PRU0's remoteproc sysfs files; the tests that use it load it
 # (consumer_load).
-PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-prm_standin pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port}
+PRUKIT_VM_MODULES=${PRUKIT_VM_MODULES:-prm_standin clkctrl_standin pruss irq_pruss_intc pru_rproc virtio_rpmsg_bus rpmsg_pru prusim_port}
 
 # The package test's Debian root (deb_root): bookworm armhf, minbase, with
 # what the packages need on a board and the kernel headers' dependencies.
