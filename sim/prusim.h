@@ -405,10 +405,13 @@ struct prusim_iep {
  * @oe: OE register (1 = input; 0xffffffff at reset, as on a board); every
  *	change is reported through &prusim_ops.gpio_oe
  * @dataout: DATAOUT register; every change is reported as pin events
+ * @gated: the bank's clocks are off (prusim_gpio_set_gated(), the
+ *	embedder's PRCM): a core's load from it stops the core; false at reset
  */
 struct prusim_gpio {
 	u32 oe;
 	u32 dataout;
+	bool gated;
 };
 
 /**
@@ -577,6 +580,7 @@ void prusim_memory_written(struct prusim *s);
 void prusim_yield(struct prusim *s);
 void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value);
 u32 prusim_gpio_read(struct prusim *s, unsigned int bank, u32 reg);
+void prusim_gpio_set_gated(struct prusim *s, unsigned int bank, bool gated);
 int prusim_gpio_bank(u32 addr);
 
 /* Peripherals as seen from outside the subsystem (prusim_mem.c) */

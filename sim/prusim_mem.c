@@ -185,6 +185,23 @@ void prusim_gpio_write(struct prusim *s, unsigned int bank, u32 reg, u32 value)
 	s->epoch++;
 }
 
+/**
+ * prusim_gpio_set_gated() - gate or clock a GPIO bank, as PRCM does
+ * @s: simulator
+ * @bank: GPIO bank 0..3
+ * @gated: true while the bank's clocks are off
+ *
+ * A core's load from a gated bank stops the core with the reason (on a
+ * board the interconnect answers it with an error).  Its stores are taken
+ * as before and reported through &prusim_ops.pin: the embedder, which
+ * gates the bank, decides what a store that reaches a gated bank does.
+ */
+void prusim_gpio_set_gated(struct prusim *s, unsigned int bank, bool gated)
+{
+	if (bank < PRUSIM_GPIO_BANKS)
+		s->gpio[bank].gated = gated;
+}
+
 static int ocp_failed(struct prusim *s, struct prusim_core *c, const char *what, u32 addr,
 		      u32 len, int ret)
 {
@@ -1060,6 +1077,11 @@ static int ocp_read(struct prusim *s, struct prusim_core *c, u32 addr, u8 *buf, 
 
 	if (bank == -EIO)
 		return bank;
+	if (bank >= 0 && s->gpio[bank].gated) {
+		prusim_stop(s, c, "OCP read of GPIO bank %d at 0x%08x while its clocks are gated",
+			    bank, addr);
+		return -EIO;
+	}
 	if (bank >= 0) {
 		regs_read(s, gpio_read32, bank, addr - prusim_gpio_base[bank], buf, len);
 		acc->cycles = prusim_read_cycles(s, bank ? PRUSIM_LAT_GPIO : PRUSIM_LAT_GPIO0, len);

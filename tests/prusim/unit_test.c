@@ -1142,6 +1142,49 @@ static void test_icss_reset(void)
 }
 
 /*
+ * A load from a GPIO bank whose clocks PRCM gated (the embedder's
+ * prusim_gpio_set_gated()) stops the core with the reason; clocked again,
+ * the same load reads the bank.  A reset of the PRU-ICSS keeps the gating,
+ * which is PRCM's.
+ */
+static void test_gpio_gated(void)
+{
+	static const u32 prog[] = {
+		0x244804e3u,	/* ldi ra, 0x4804 */
+		0x0910e3e3u,	/* lsl ra, ra, 16 */
+		0x24c13883u,	/* ldi ra.w0, 0xc138: GPIO1 DATAIN */
+		0xf1002384u,	/* lbbo &r4, ra, 0, 4 */
+		HALT,
+	};
+	struct prusim *s = new_sim(NULL, NULL);
+	struct prusim_status st;
+	u32 syscfg = 0x0a, control = 0x2;	/* STANDBY_INIT off; EN */
+
+	prusim_gpio_set_gated(s, 1, true);
+	put_words(s, 0, prog, ARRAY_SIZE(prog));
+	prusim_host_write(s, 0x26004, &syscfg, 4);
+	prusim_host_write(s, 0x22000, &control, 4);
+	prusim_run(s, 100);
+	prusim_get_status(s, 0, &st);
+	check(st.state == PRUSIM_STOPPED && st.pc == 3 &&
+	      strstr(st.reason, "GPIO bank 1 at 0x4804c138 while its clocks are gated"),
+	      "gpio-gated-load-stops-core", "state %d pc %u reason \"%s\"", st.state, st.pc,
+	      st.reason);
+
+	prusim_icss_reset(s);
+	check(s->gpio[1].gated, "gpio-gated-kept-by-icss-reset", "the bank's gating was lost");
+	prusim_gpio_set_gated(s, 1, false);
+	put_words(s, 0, prog, ARRAY_SIZE(prog));
+	prusim_host_write(s, 0x26004, &syscfg, 4);
+	prusim_host_write(s, 0x22000, &control, 4);
+	prusim_run(s, 100);
+	prusim_get_status(s, 0, &st);
+	check(st.state == PRUSIM_HALTED && st.regs[4] == 0, "gpio-clocked-load-reads",
+	      "state %d r4 0x%x reason \"%s\"", st.state, st.regs[4], st.reason);
+	free(s);
+}
+
+/*
  * With ocp_write_delay 200 a store to DDR issued in cycle 3 lands in 203 and
  * the next (cycle 5) in 205; the event strobed between them reaches the ARM
  * in cycle 5, long before its data.  A load issued in cycle 6 sees the
@@ -1240,5 +1283,6 @@ int main(int argc, char **argv)
 	test_unmodelled();
 	test_posted();
 	test_icss_reset();
+	test_gpio_gated();
 	return failures ? 1 : 0;
 }
