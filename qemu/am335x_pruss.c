@@ -986,6 +986,9 @@ static void pruss_reset_state(AM335xPrussState *p)
     p->icss_resets = 0;
     /* the TRM's reset values: every bank's clocks disabled */
     memset(p->gpio_clkctrl, 0, sizeof(p->gpio_clkctrl));
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        prusim_gpio_set_gated(p->s, i, true);
+    }
     p->gpio_clock_gatings = 0;
     memset(p->reset_states, PRUSIM_DISABLED, sizeof(p->reset_states));
     p->runnable = false;

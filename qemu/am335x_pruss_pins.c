@@ -517,9 +517,10 @@ static uint64_t cm_read(void *opaque, hwaddr off, unsigned int size)
 
 /*
  * MODULEMODE "enabled" (2) clocks the bank, "disabled" (0) gates it: a
- * PRU's store to it is then lost (gpio_gated_writes), an ARM access is an
- * unmodelled one, and its pins keep what they showed until it is clocked
- * again.  IDLEST is read-only; the reserved modes are not modelled.
+ * PRU's store to it is then lost (gpio_gated_writes), a PRU's load stops
+ * the core (the simulator's, from prusim_gpio_set_gated()), an ARM access
+ * is an unmodelled one, and its pins keep what they showed until it is
+ * clocked again.  IDLEST is read-only; the reserved modes are not modelled.
  */
 static void cm_write(void *opaque, hwaddr off, uint64_t val,
                      unsigned int size)
@@ -539,6 +540,7 @@ static void cm_write(void *opaque, hwaddr off, uint64_t val,
             p->gpio_clock_gatings++;
         }
         p->gpio_clkctrl[bank] = v;
+        prusim_gpio_set_gated(p->s, bank, !pruss_gpio_clocked(p, bank));
         gpio_show(p, p->s->now, bank);      /* clocked: the pins catch up */
     }
     p->runnable = true;

@@ -395,7 +395,8 @@ boot() {
 
 # kernel_log_clean DIR OUT [WHICH] - fail on any splat in the console or
 # dmesg, and on anything the QEMU PRU-ICSS logged (an access it does not
-# model, a PRU the simulator stopped: DIR/qemu.log).  WHICH ("second boot: ")
+# model, a PRU the simulator stopped: DIR/qemu.log) but what a test said it
+# makes on purpose (OUT/<test>/model-log-expected).  WHICH ("second boot: ")
 # goes into the result's name.
 kernel_log_clean() {
 	local dir=$1 out=$2 which=${3:-} hits
@@ -424,6 +425,21 @@ kernel_log_clean() {
 	fi
 	# (QEMU's own boards log there too: vexpress probes devices it lacks)
 	hits=$(grep '^am335x-pruss: ' "$dir/qemu.log" 2>/dev/null || true)
+	# A test that makes the model log on purpose (a PRU it stops) says so
+	# in OUT/<test>/model-log-expected: "COUNT TEXT" per line, COUNT lines
+	# with TEXT in them, exactly; those lines are its, the rest are not.
+	local f n text got
+	for f in "$out"/*/model-log-expected; do
+		[ -e "$f" ] || continue
+		while read -r n text; do
+			got=$(grep -cF -- "$text" <<<"$hits" || true)
+			if [ "$got" != "$n" ]; then
+				echo "FAIL: $kver: ${which}kernel log clean, but the PRU-ICSS model logged \"$text\" $got time(s), $n expected (${f#"$out"/})"
+				return 1
+			fi
+			hits=$(grep -vF -- "$text" <<<"$hits" || true)
+		done <"$f"
+	done
 	if [ -n "$hits" ]; then
 		sort <<<"$hits" | uniq -c | sort -rn | head -n 20
 		echo "FAIL: $kver: ${which}kernel log clean, but the PRU-ICSS model logged $(wc -l <<<"$hits") line(s) ($dir/qemu.log)"

@@ -7,7 +7,9 @@
 # clean (a clean kernel once failed make vmrun on that line), a kernel
 # WARNING, BUG or Oops is not - on a line of its own, after a test's output
 # on the same console line, or in the dmesg the guest saved - and neither is
-# a line the PRU-ICSS model logged.  One PASS:/FAIL: line per case.
+# a line the PRU-ICSS model logged, unless a test said it makes that line on
+# purpose, and how often (model-log-expected).  One PASS:/FAIL: line per
+# case.
 set -uo pipefail
 top=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d)
@@ -21,13 +23,18 @@ PASS: 70-rpmsg-echo: no Oops/BUG/WARNING in dmesg
 INFO: a test quoting "Kernel panic" and "BUG: KASAN" in its own words
 PRUKIT-VM-EXIT 0'
 
-# expect NAME WANT(0 clean, 1 not) CONSOLE DMESG [QEMU-LOG]
+# expect NAME WANT(0 clean, 1 not) CONSOLE DMESG [QEMU-LOG [MODEL-LOG-EXPECTED]]
+# (the last: a test's out/<test>/model-log-expected, "COUNT TEXT" lines)
 expect() {
 	local what=$1 want=$2 d=$tmp/$RANDOM got
 	mkdir -p "$d/out"
 	printf '%s\n' "$3" >"$d/console.log"
 	printf '%s\n' "$4" >"$d/out/dmesg.txt"
 	printf '%s\n' "${5:-}" >"$d/qemu.log"
+	if [ -n "${6:-}" ]; then
+		mkdir -p "$d/out/15-board"
+		printf '%s\n' "$6" >"$d/out/15-board/model-log-expected"
+	fi
 	"$top/scripts/vm.sh" log-check "$d" "$d/out" >"$d/result" 2>&1
 	got=$?
 	[ "$got" -eq 0 ] || got=1
@@ -54,4 +61,14 @@ expect "a hung task in the guest's dmesg is a splat" 1 \
 	"$clean_boot" "[  250.000000] INFO: task modprobe:312 blocked for more than 122 seconds."
 expect "a line the PRU-ICSS model logged fails the check" 1 \
 	"$clean_boot" "" "am335x-pruss: PRU0 stopped by the simulator: illegal opcode at 0x0040"
+gated='am335x-pruss: PRU0 stopped at pc 0x60: OCP read of GPIO bank 1 at 0x4804c134 while its clocks are gated'
+expect "the model's lines a test expects, as many times as it says, are clean" 0 \
+	"$clean_boot" "" "$gated
+$gated" "2 OCP read of GPIO bank 1 at 0x4804c134 while its clocks are gated"
+expect "... once more or once less than the test says fails the check" 1 \
+	"$clean_boot" "" "$gated" "2 OCP read of GPIO bank 1 at 0x4804c134 while its clocks are gated"
+expect "... and so does a line the test did not expect beside them" 1 \
+	"$clean_boot" "" "$gated
+am335x-pruss: GPIO1 read at 0x000 while PRCM gates its clocks" \
+	"1 OCP read of GPIO bank 1 at 0x4804c134 while its clocks are gated"
 exit $bad

@@ -8,12 +8,13 @@
  *   gpio1_28 (Linux GPIO 60) = BeagleBone header P9_12 (pad gpmc_ben1,
  *   mode 7, GPIO from reset)
  *
- * On a board the stores reach the pin only while Linux keeps the bank
- * enabled: gpio-omap gates a bank's clocks (GPIO_CTRL.DISABLEMODULE) when
- * its last requested line is freed.  Hold a line of the bank, e.g.
- *	gpioset -m signal gpiochip1 28=0 &
- * and the pulses show; with nothing held they change no pin (the VM's
- * tests/vm/cases/15-board runs both).
+ * On a board the bank answers only while Linux keeps it enabled: with no
+ * line of the bank requested, PRCM gates its clocks (ti-sysc) and
+ * gpio-omap disables it (GPIO_CTRL.DISABLEMODULE).  Hold a line of the
+ * bank, e.g.
+ *	gpioset -m signal gpiochip1 27=0 &
+ * and the pulses show; with nothing held the load of OE fails (the VM
+ * stops the core there; tests/vm/cases/15-board runs both).
  */
 #include <stdint.h>
 #include <am335x/gpio.h>
