@@ -14,6 +14,7 @@ import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the tree
@@ -57,6 +58,17 @@ def make(text):
     clock = Clock()
     px = merge.Pixeld(config.Config(conf(text)), clock=clock)
     return px, clock
+
+
+def wait_for(cond, timeout=10):
+    """Poll COND (a callable) every 20 ms until it is true or TIMEOUT s have
+    passed; its last value."""
+    end = time.monotonic() + timeout
+    while True:
+        got = cond()
+        if got or time.monotonic() >= end:
+            return got
+        time.sleep(0.02)
 
 
 def frames(name, size):
@@ -649,10 +661,21 @@ while True:
     if not line or "listening" in line:
         break
 check("it starts and listens on 127.0.0.1", "listening on 127.0.0.1" in log[-1], log)
+# from here on a thread reads the daemon's log, and a check waits for the
+# line it expects (logged())
+reader = threading.Thread(target=lambda: log.extend(p.stderr), daemon=True)
+reader.start()
+
+
+def logged(text, since):
+    """Whether the daemon logged TEXT after its first SINCE lines."""
+    return any(text in ln for ln in log[since:])
+
+
 opc = ps.OpcClient(port=ports["o"])
 opc.put_pixels(1, bytes([1]) * 12)
-time.sleep(0.3)
-check("OPC on TCP: the frame", frames("run", 12) == [bytes([1]) * 12], frames("run", 12))
+check("OPC on TCP: the frame", wait_for(lambda: frames("run", 12) == [bytes([1]) * 12]),
+      frames("run", 12))
 big = pattern(65535, 5)
 opc.put_pixels(2, big)
 end = time.monotonic() + 10
@@ -662,32 +685,20 @@ check("OPC on TCP, the largest message (65535 bytes, 21845 pixels: more than a U
       "holds): the frame", frames("big", 65535) == [big], len(frames("big", 65535)))
 with open(path, "a") as f:
     f.write("map f ddp offset x\n")
+n = len(log)
 p.send_signal(signal.SIGHUP)
-time.sleep(0.5)
+hup = wait_for(lambda: logged("the running configuration stays", n))
 opc.put_pixels(1, bytes([2]) * 12)
-time.sleep(0.3)
 check("SIGHUP with an error: the running configuration stays (the connection too)",
-      frames("run", 12)[-1:] == [bytes([2]) * 12])
+      hup and wait_for(lambda: frames("run", 12)[-1:] == [bytes([2]) * 12]), log[n:])
 conf(base + "map f ddp\n", "run.conf")
+n = len(log)
 p.send_signal(signal.SIGHUP)
-time.sleep(0.5)
+hup = wait_for(lambda: logged("reloaded", n))
 d = ps.DdpSender(port=ports["d"])
 d.frame(bytes([3]) * 12)
-time.sleep(0.3)
-check("SIGHUP with a good one: DDP mapped now", frames("run", 12)[-1:] == [bytes([3]) * 12])
-u = ps.OpcClient(port=ports["o"], udp=True)
-u.put_pixels(1, bytes([4]) * 12)
-time.sleep(0.3)
-check("... and OPC no longer", frames("run", 12)[-1:] == [bytes([3]) * 12])
-p.send_signal(signal.SIGUSR1)
-time.sleep(0.5)
-try:
-    with open(os.path.join(TMP, "stats")) as f:
-        stats = dict(ln.split() for ln in f)
-except OSError:
-    stats = {}
-check("SIGUSR1: the counters in the stats file", stats.get("ddp.accepted") == "1" and
-      stats.get("opc.ignored.channel") == "1" and stats.get("output.f.frames") == "3", stats)
+check("SIGHUP with a good one: DDP mapped now",
+      hup and wait_for(lambda: frames("run", 12)[-1:] == [bytes([3]) * 12]), log[n:])
 
 
 def stats_now(want_key, want_value, timeout=10):
@@ -706,6 +717,14 @@ def stats_now(want_key, want_value, timeout=10):
     return got
 
 
+u = ps.OpcClient(port=ports["o"], udp=True)
+u.put_pixels(1, bytes([4]) * 12)
+# taken and ignored (channel 1 is no longer OPC's) once the counter says so
+stats = stats_now("opc.ignored.channel", 1)
+check("... and OPC no longer", stats.get("opc.ignored.channel") == "1" and
+      frames("run", 12)[-1:] == [bytes([3]) * 12], stats)
+check("SIGUSR1: the counters in the stats file", stats.get("ddp.accepted") == "1" and
+      stats.get("opc.ignored.channel") == "1" and stats.get("output.f.frames") == "3", stats)
 before = stats_now("opc.accepted", 0)
 with socket.create_connection(("127.0.0.1", ports["o"]), timeout=5) as c:
     c.sendall(b"".join(ps.opc_message(2, b"") for _ in range(2000)))
@@ -720,6 +739,23 @@ q = subprocess.run([sys.executable, DAEMON, "--config", path], capture_output=Tr
 check("a second daemon on the same ports: exit 1, why", q.returncode == 1 and
       "cannot listen" in q.stderr and "Address already in use" in q.stderr, q.stderr)
 # datagrams the kernel drops for want of room in the receive buffer: counted
+
+
+def udp_queued(port):
+    """Bytes in the receive queue of the UDP socket bound to PORT
+    (/proc/net/udp's rx_queue), None if there is none."""
+    for table in ("/proc/net/udp", "/proc/net/udp6"):
+        try:
+            with open(table) as f:
+                rows = [ln.split() for ln in f][1:]
+        except OSError:
+            continue
+        for r in rows:
+            if int(r[1].rsplit(":", 1)[1], 16) == port:
+                return int(r[4].split(":")[1], 16)
+    return None
+
+
 before = stats_now("opc.accepted", 0)
 p.send_signal(signal.SIGSTOP)
 with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
@@ -727,8 +763,10 @@ with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as tx:
     for _ in range(3000):
         tx.sendto(pk, ("127.0.0.1", ports["e"]))
     p.send_signal(signal.SIGCONT)
-    time.sleep(0.5)
-    tx.sendto(pk, ("127.0.0.1", ports["e"]))	# carries the count of the drops before it
+    # once the daemon has read what the buffer held, one more datagram, which
+    # carries the count of the drops before it
+    wait_for(lambda: udp_queued(ports["e"]) == 0)
+    tx.sendto(pk, ("127.0.0.1", ports["e"]))
 
 
 def taken(st):
@@ -769,7 +807,7 @@ try:
     OpcClient4 = ps.OpcClient(port=port6, udp=True)
     OpcClient4.put_pixels(1, bytes([4]) * 12)
     OpcClient4.close()
-    time.sleep(0.5)
+    wait_for(lambda: len(frames("six", 12)) >= 2)
     got6 = frames("six", 12)
 except OSError as e:
     got6 = str(e)
@@ -788,7 +826,7 @@ def multicast_run(text, name, netns=False):
     (the frames NAME got, the daemon's log)."""
     fresh(name)
     script = conf("""
-import fcntl, socket, struct, subprocess, sys, time
+import fcntl, os, socket, struct, subprocess, sys, time
 if %(netns)r:
     sk = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     req = struct.pack("40s", b"lo")
@@ -802,11 +840,14 @@ while not log or log[-1] and "listening" not in log[-1]:
 tx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
 tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_IF, socket.inet_aton("127.0.0.1"))
 tx.sendto(%(pkt)r, ("239.255.0.5", %(port)d))
-time.sleep(0.5)
+end = time.monotonic() + 10     # until the frame is written (or 10 s)
+while time.monotonic() < end and not (os.path.exists(%(out)r) and
+                                      os.path.getsize(%(out)r) >= 12):
+    time.sleep(0.02)
 d.terminate()
 log.append(d.communicate(timeout=10)[1])
 print("".join(log))
-""" % dict(netns=netns, daemon=DAEMON, cfg=conf(text, name + ".conf"),
+""" % dict(netns=netns, daemon=DAEMON, cfg=conf(text, name + ".conf"), out=os.path.join(TMP, name),
            pkt=ps.e131_data(5, bytes([5]) * 12), port=int(text.split("e131-port ")[1].split()[0])),
                   name + ".py")
     cmd = ["unshare", "-n", sys.executable, script] if netns else [sys.executable, script]
@@ -832,7 +873,7 @@ try:
 except subprocess.TimeoutExpired:
     p.kill()
     rc = None
-rest = p.stderr.read()
-check("SIGTERM: exit 0, no traceback", rc == 0 and "Traceback" not in "".join(log) + rest,
-      rest[-300:])
+reader.join(timeout=10)     # it reads to the end of the daemon's log
+rest = "".join(log)
+check("SIGTERM: exit 0, no traceback", rc == 0 and "Traceback" not in rest, rest[-300:])
 sys.exit(1 if failed else 0)
