@@ -41,11 +41,11 @@ def bind_only(name):
 
 def gpio_pin(phandle_cell, bit):
     """The trace's pin id of GPIO line BIT of the bank whose phandle is
-    given (the banks of the board path's tree)."""
-    for node in glob.glob("/proc/device-tree/ocp@44c00000/gpio@*"):
+    given (the banks of the board path's tree, each in its target module)."""
+    for node in glob.glob("/proc/device-tree/ocp@44c00000/target-module@*/gpio@0"):
         with open(node + "/phandle", "rb") as f:
             if f.read() == phandle_cell:
-                base = int(node.rsplit("@", 1)[1], 16)
+                base = int(os.path.dirname(node).rsplit("@", 1)[1], 16)
                 return 64 + [0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000].index(base) * 32 + bit
     raise ValueError("no GPIO bank with phandle %s" % phandle_cell.hex())
 
