@@ -8,6 +8,7 @@ at least half the shortest reset; a frame still running when the trace was
 taken is left out, and so is a first fall followed by such a low."""
 import glob
 import os
+import time
 
 import trace
 from rpmsg import write_attr
@@ -127,6 +128,19 @@ def wire(frame, string, leds, max_leds, bpl, order):
 def read_trace(sim):
     with open(sim + "/trace", "rb") as f:
         return f.read()
+
+
+def read_settled(sim, pins, gap=GAP, timeout=10):
+    """The raw trace once PINS have been quiet for GAP cycles after the last
+    edge of any of them (the last frame's reset is on the pins, so the
+    decoder takes that frame), or as it is after TIMEOUT seconds."""
+    end = time.monotonic() + timeout
+    while True:
+        data = read_trace(sim)
+        last = max((e[-1][0] for e in pin_edges(data, pins).values() if e), default=None)
+        if last is None or trace.end_bytes(data) - last >= gap or time.monotonic() >= end:
+            return data
+        time.sleep(0.05)
 
 
 def clear_trace(sim):
