@@ -40,8 +40,10 @@
  * Outputs: interrupts host_intr0..7 (INTC host interrupts 2..9) and one per
  * GPIO bank (never raised: GPIO interrupts are not modelled).
  *
- * The simulation runs in a thread of its own.  Lock order: the BQL before
- * the device lock, everywhere.  MMIO handlers run under the BQL and take
+ * The simulation runs in a thread of its own, or, with QEMU's -icount, in
+ * lockstep with the guest's virtual clock on the vCPUs' thread (see
+ * "Lockstep" below).  Lock order: the BQL before the device lock,
+ * everywhere.  MMIO handlers run under the BQL and take
  * the device lock; the thread runs a slice under the device lock only,
  * drops it between slices (and waits there while an MMIO handler wants it),
  * and takes the BQL, then the device lock, to change interrupt lines.
@@ -76,6 +78,7 @@
 #include "hw/sysbus.h"
 #include "migration/vmstate.h"
 #include "qom/object.h"
+#include "sysemu/cpu-timers.h"
 #include "sysemu/runstate.h"
 #include "trace.h"
 
@@ -416,7 +419,7 @@ static bool pruss_held(AM335xPrussState *p, int *wait_ms)
 {
     uint32_t lines = p->hold_mode == HOLD_NONE ? 0 : arm_lines(p);
     uint64_t events = 0;
-    int64_t now = pruss_now_ns(), held;
+    int64_t now = pruss_now_ns(p), held;
 
     /*
      * taken: from its read from HIPIR until acknowledged (SICR);
@@ -549,16 +552,26 @@ static void intc_write_seen(AM335xPrussState *p, uint32_t off, uint32_t val)
 /* ------------------------------------------------------------------ */
 /* Taking the lock from an MMIO handler (BQL held)                      */
 
+static void lockstep_advance(AM335xPrussState *p);
+
+/* In lockstep the PRUs first run up to the access's virtual time */
 void pruss_lock(AM335xPrussState *p)
 {
     qatomic_inc(&p->waiters);
     qemu_mutex_lock(&p->lock);
     qatomic_dec(&p->waiters);
+    if (p->lockstep) {
+        lockstep_advance(p);
+    }
 }
 
+/* @kick: the access may have given the PRUs something to do */
 void pruss_unlock(AM335xPrussState *p, bool kick)
 {
     if (kick) {
+        if (p->lockstep) {
+            lockstep_advance(p);
+        }
         qemu_cond_signal(&p->wake);
     }
     qemu_cond_signal(&p->turn);
@@ -865,7 +878,7 @@ static void *pruss_thread(void *opaque)
             qemu_cond_wait(&p->turn, &p->lock);
             continue;
         }
-        t0 = pruss_now_ns();
+        t0 = qemu_clock_get_ns(QEMU_CLOCK_REALTIME);
         slice = p->slice_cycles;
         if (p->jitter) {
             /* knob: random slices; the ARM's accesses land anywhere */
@@ -873,7 +886,7 @@ static void *pruss_thread(void *opaque)
             p->jitter_slices++;
         }
         prusim_run(p->s, slice);
-        p->host_ns += pruss_now_ns() - t0;
+        p->host_ns += qemu_clock_get_ns(QEMU_CLOCK_REALTIME) - t0;
         /*
          * Idle: every core waits for something only the outside brings
          * (an ARM store, which comes through the MMIO handlers, or new
@@ -910,6 +923,152 @@ static void *pruss_thread(void *opaque)
     return NULL;
 }
 
+/* ------------------------------------------------------------------ */
+/* Lockstep: the PRUs' time is the guest's virtual clock                */
+
+/*
+ * With QEMU's -icount, the guest's virtual clock counts the instructions
+ * the emulated ARM ran (2^shift ns each: shift 0 is a 1 GHz ARM beside the
+ * PRUs' 200 MHz), and one thread runs every vCPU and the virtual clock's
+ * timers.  The simulation then has no thread of its own: under the BQL,
+ * the PRUs run up to the virtual time of each ARM access to the device
+ * (pruss_lock()) and of a timer one slice ahead while they run.  The ARM
+ * and the PRUs take turns, so a loaded host slows both alike, and how far
+ * a PRU gets while Linux does something depends on what Linux did, not on
+ * the host.  An ARM access sees the PRUs exactly as they were at its time;
+ * a PRU sees the ARM's stores to DDR up to one slice early (the ARM ran
+ * that slice first), and its own reach DDR for the ARM at the latest at the
+ * slice's end.  The hold, the knobs' waits and the jitter knob's pauses
+ * stop simulated time for virtual time, not host time.
+ */
+
+/* Simulated time stands still until @until (virtual ns) */
+static void lockstep_rebase(AM335xPrussState *p, int64_t until)
+{
+    p->vbase = until;
+    p->cbase = p->s->now;
+}
+
+/* The virtual time the PRUs have reached */
+static int64_t lockstep_vsim(AM335xPrussState *p)
+{
+    return p->vbase + (int64_t)(p->s->now - p->cbase) * PRU_CYCLE_NS;
+}
+
+/*
+ * The knobs' waits (knob_waits()) in virtual time: each store held back
+ * lands once its flight has passed, then the pauses.  True while one
+ * lasts (simulated time rebased past its end).
+ */
+static bool lockstep_knobs(AM335xPrussState *p, int64_t vsim)
+{
+    uint64_t pause_us;
+
+    if (p->landing) {
+        flight_land_one(p);
+        p->landing = false;
+    }
+    if (p->flight_n) {
+        p->landing = true;
+        lockstep_rebase(p, vsim + (int64_t)p->ocp_write_flight_us * SCALE_US);
+        return true;
+    }
+    pause_us = (uint64_t)p->ocp_pauses * p->ocp_write_pause_us;
+    p->ocp_pauses = 0;
+    if (pause_us) {
+        lockstep_rebase(p, vsim + pause_us * SCALE_US);
+        return true;
+    }
+    return false;
+}
+
+/*
+ * Run the PRUs up to the guest's virtual time now, and set the timer for
+ * when they next have something to do before the ARM comes.  BQL and the
+ * device lock held.
+ */
+static void lockstep_advance(AM335xPrussState *p)
+{
+    int64_t now = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+    int64_t next = -1;
+
+    while (!p->quit) {
+        int64_t vsim = lockstep_vsim(p), t0;
+        int wait_ms = 0;
+        uint64_t n;
+
+        if (vsim > now) {
+            next = vsim;                /* a knob's wait ends then */
+            break;
+        }
+        if (lockstep_knobs(p, vsim)) {
+            continue;
+        }
+        if (pruss_held(p, &wait_ms)) {
+            lockstep_rebase(p, now);
+            next = now + (int64_t)wait_ms * SCALE_MS;
+            break;
+        }
+        if (p->freeze || !p->runnable || !prusim_active(p->s)) {
+            /* until the ARM brings something: its access re-arms */
+            p->runnable = p->runnable && prusim_active(p->s);
+            lockstep_rebase(p, now);
+            break;
+        }
+        n = (now - vsim) / PRU_CYCLE_NS;
+        if (!n) {
+            next = vsim + (int64_t)p->slice_cycles * PRU_CYCLE_NS;
+            break;
+        }
+        if (p->jitter) {
+            /* knob: random slices */
+            n = MIN(n, (uint64_t)g_rand_int_range(p->rng, 1,
+                                                  2 * p->slice_cycles + 1));
+            p->jitter_slices++;
+        } else {
+            n = MIN(n, (uint64_t)p->slice_cycles);
+        }
+        t0 = qemu_clock_get_ns(QEMU_CLOCK_REALTIME);
+        n = prusim_run(p->s, n);
+        p->host_ns += qemu_clock_get_ns(QEMU_CLOCK_REALTIME) - t0;
+        p->lockstep_runs++;
+        p->runnable = !p->s->waiting || inputs_pending(p);
+        report_stops(p);
+        if (!n && p->runnable && !p->irq_dirty && !p->flight_n &&
+            !p->ocp_pauses) {
+            /* no cycle and nothing to see to: the timer tries again */
+            next = now + (int64_t)p->slice_cycles * PRU_CYCLE_NS;
+            break;
+        }
+        if (p->jitter &&
+            !g_rand_int_range(p->rng, 0, JITTER_PAUSE_ONE_IN)) {
+            /* knob: the simulation stops a while, the ARM runs on */
+            uint32_t us = g_rand_int_range(p->rng, 0, JITTER_PAUSE_MAX_US + 1);
+
+            p->jitter_pauses++;
+            p->jitter_pause_ns += us * SCALE_US;
+            lockstep_rebase(p, lockstep_vsim(p) + (int64_t)us * SCALE_US);
+        }
+        if (p->irq_dirty) {
+            pruss_update_irqs(p);
+        }
+    }
+    if (next < 0 || p->quit) {
+        timer_del(p->vtimer);
+    } else {
+        timer_mod(p->vtimer, next);
+    }
+}
+
+static void lockstep_timer(void *opaque)
+{
+    AM335xPrussState *p = opaque;
+
+    qemu_mutex_lock(&p->lock);
+    lockstep_advance(p);
+    qemu_mutex_unlock(&p->lock);
+}
+
 /* BQL held */
 static void pruss_vm_state_change(void *opaque, bool running, RunState state)
 {
@@ -917,9 +1076,9 @@ static void pruss_vm_state_change(void *opaque, bool running, RunState state)
 
     pruss_lock(p);
     p->vm_running = running;
-    if (running && p->hold_since) {
+    if (running && p->hold_since && !p->lockstep) {
         /* a hold's cap counts host time the VM ran */
-        p->hold_since = pruss_now_ns();
+        p->hold_since = pruss_now_ns(p);
     }
     pruss_unlock(p, true);
 }
@@ -949,6 +1108,11 @@ static void pruss_reset_state(AM335xPrussState *p)
         p->pad[i] = PAD_RESET;
     }
     pruss_pads_masks(p);
+    p->landing = false;
+    if (p->lockstep) {
+        /* simulated time starts again from the guest's now */
+        lockstep_rebase(p, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL));
+    }
     memset(p->gpio_out, 0, sizeof(p->gpio_out));
     memset(p->gpio_shown, 0, sizeof(p->gpio_shown));
     for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
@@ -1091,12 +1255,19 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
     qemu_cond_init(&p->wake);
     qemu_cond_init(&p->turn);
     p->rng = g_rand_new();
+    /* with -icount the PRUs follow the guest's virtual clock, thread-less */
+    p->lockstep = icount_enabled();
+    if (p->lockstep) {
+        p->vtimer = timer_new_ns(QEMU_CLOCK_VIRTUAL, lockstep_timer, p);
+    }
     pruss_reset_state(p);
     p->vm_running = runstate_is_running();
     p->vmstate_entry = qemu_add_vm_change_state_handler(pruss_vm_state_change,
                                                         p);
-    qemu_thread_create(&p->thread, "am335x-pruss", pruss_thread, p,
-                       QEMU_THREAD_JOINABLE);
+    if (!p->lockstep) {
+        qemu_thread_create(&p->thread, "am335x-pruss", pruss_thread, p,
+                           QEMU_THREAD_JOINABLE);
+    }
 }
 
 static void am335x_pruss_unrealize(DeviceState *dev)
@@ -1108,7 +1279,11 @@ static void am335x_pruss_unrealize(DeviceState *dev)
     pruss_lock(p);
     p->quit = true;
     pruss_unlock(p, true);
-    qemu_thread_join(&p->thread);
+    if (p->lockstep) {
+        timer_free(p->vtimer);
+    } else {
+        qemu_thread_join(&p->thread);
+    }
     for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
         pruss_stim_free(&p->input[i].stim);
     }

@@ -108,6 +108,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 #define HOLD_NONE               2       /* never */
 #define OCP_WRITE_DELAY_MAX     10000000 /* cycles: 50 ms */
 #define DDR_JITTER_MAX          10000   /* cycles */
+#define PRU_CYCLE_NS            5       /* 200 MHz */
 #define JITTER_PAUSE_ONE_IN     64      /* a slice in 64 is followed by ... */
 #define JITTER_PAUSE_MAX_US     200     /* ... a pause of up to 200 us */
 
@@ -163,7 +164,7 @@ struct AM335xPrussState {
     uint32_t port_len;
     uint32_t port_handle;
 
-    QemuThread thread;
+    QemuThread thread;              /* the simulation's, unless lockstep */
     QemuMutex lock;                 /* everything below; after the BQL */
     QemuCond wake;                  /* the thread waits for work here */
     QemuCond turn;                  /* ... and here for MMIO handlers */
@@ -174,6 +175,17 @@ struct AM335xPrussState {
     bool vm_running;
     uint32_t ocp_pauses;            /* OCP writes that ended the slice */
     VMChangeStateEntry *vmstate_entry;
+    /*
+     * lockstep (QEMU's -icount): no thread; the PRUs' cycle @cbase was the
+     * guest's virtual time @vbase, and they run up to the virtual time of
+     * each ARM access to the device and of @vtimer (am335x_pruss.c)
+     */
+    bool lockstep;
+    QEMUTimer *vtimer;
+    int64_t vbase;
+    uint64_t cbase;
+    bool landing;                   /* a held-back store lands at @vbase */
+    uint64_t lockstep_runs;
 
     struct prusim *s;
     bool stopped_reported[PRUSIM_NUM_CORES];
@@ -231,7 +243,7 @@ struct AM335xPrussState {
     uint64_t in_service;    /* ... and masked (EICR) or acked masked (SICR) */
     uint32_t expired_lines; /* held past the cap: ignored until they clear */
     uint64_t expired_events;
-    int64_t hold_since;     /* host ns, 0 while not holding */
+    int64_t hold_since;     /* pruss_now_ns(), 0 while not holding */
     uint64_t holds;
     uint64_t hold_ns;
     uint64_t hold_max_ns;
@@ -264,9 +276,11 @@ struct AM335xPrussState {
     uint64_t jitter_pause_ns;
 };
 
-static inline int64_t pruss_now_ns(void)
+/* The clock of holds and their cap: the guest's in lockstep, else the host's */
+static inline int64_t pruss_now_ns(AM335xPrussState *p)
 {
-    return qemu_clock_get_ns(QEMU_CLOCK_REALTIME);
+    return qemu_clock_get_ns(p->lockstep ? QEMU_CLOCK_VIRTUAL :
+                             QEMU_CLOCK_REALTIME);
 }
 
 /* PRCM holds the PRU-ICSS in its local reset */

@@ -145,7 +145,7 @@ static uint32_t port_stats(AM335xPrussState *p)
     uint8_t cmr[PRUSIM_NUM_EVENTS], hmr[12];
     uint32_t len = 0;
     unsigned int i;
-    int64_t held = p->hold_since ? pruss_now_ns() - p->hold_since : 0;
+    int64_t held = p->hold_since ? pruss_now_ns(p) - p->hold_since : 0;
 
     prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
     prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
@@ -229,6 +229,9 @@ static uint32_t port_stats(AM335xPrussState *p)
     port_add(p, &len, "jitter %u slices %" PRIu64 " pauses %" PRIu64
              " pause_ns %" PRIu64 "\n", p->jitter, p->jitter_slices,
              p->jitter_pauses, p->jitter_pause_ns);
+    port_add(p, &len, "clock %s virtual_ns %" PRId64 " lockstep_runs %" PRIu64
+             "\n", p->lockstep ? "lockstep" : "thread",
+             qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL), p->lockstep_runs);
     port_add(p, &len, "unmodelled %" PRIu64 "\n", p->unimp);
     port_add(p, &len, "unmodelled_last %s\n",
              p->unimp ? p->unimp_last : "-");

@@ -26,7 +26,9 @@
 #	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
-#	For each kernel (default: 5.10-ti 6.1 6.12 6.12-ti), boot once and run the tests in tests/vm/cases and
+#	For each kernel (default: 6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti;
+#	SERIES@lockstep is SERIES with PRUKIT_VM_CLOCK=lockstep running
+#	LOCKSTEP_TESTS), boot once and run the tests in tests/vm/cases and
 #	drivers/<driver>/tests/vm/cases of drivers/registry's drivers (all,
 #	or those named in TESTS), bring back
 #	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N
@@ -55,6 +57,11 @@
 # store over the OCP master port takes to land in RAM (0: at once).
 # PRUKIT_VM_DDR_JITTER=CYCLES (default 0): while the jitter seed is not 0,
 # each DDR load or store of a PRU takes up to this many cycles longer.
+# PRUKIT_VM_CLOCK=thread (the default) or lockstep: the simulated PRUs run
+# on a thread of their own as fast as the host lets them, or in lockstep
+# with the guest's virtual clock (QEMU's -icount shift=0: one ARM
+# instruction a nanosecond, a PRU cycle every five; the vCPUs and the PRUs
+# take turns on one thread).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -66,6 +73,10 @@ need_pkgs device-tree-compiler cpio kmod tar sigrok-cli
 # 55% steal time: 6.12 took 749 s in its tests alone).  The bound is for a
 # hung guest, not a slow one.
 VM_TIMEOUT=${VM_TIMEOUT:-2400}
+# What a lockstep boot of make vmtest runs (SERIES@lockstep below): the
+# clock's own check, then the interrupts of a 10 us burst and rpmsg with
+# the ARM and the PRUs at a board's ratio.
+LOCKSTEP_TESTS=${LOCKSTEP_TESTS:-10-boot 17-clock 65-pru-consumer 70-rpmsg-echo}
 # A guest keeps about one host CPU busy, not two (its simulated PRU is one
 # thread; a 6.12 boot of every test used 1.1 CPUs on average), so vm.sh test
 # boots as many kernels at once as the host has CPUs: on 2 CPUs, 5.10 and
@@ -91,7 +102,25 @@ VMDIR=$PRUKIT_TOP/tests/vm
 cmdline="console=ttyAMA0 loglevel=5 panic=-1 rdinit=/init page_poison=1 log_buf_len=1M printk.time=1"
 cmdline+=" slub_debug=U,kmalloc-*,kernfs_node_cache stack_depot_disable=1"
 cmdline+=${PRUKIT_VM_APPEND:+ $PRUKIT_VM_APPEND}
-machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+# clock_args thread|lockstep - set machine and accel for a boot whose
+# simulated PRUs run on their own thread, or in lockstep with the guest's
+# virtual clock.  Lockstep boots one vCPU (an AM335x has one Cortex-A8):
+# QEMU 7.2's -icount with two hangs the vexpress-a15's boot before its
+# first console line (tried: shift 0 and auto, sleep on and off).
+clock_args() {
+	case $1 in
+	thread)
+		machine=(-smp "$VM_CPUS" -m "$VM_MEM" -nic none)
+		accel=(-accel tcg,thread=multi)
+		;;
+	lockstep)
+		machine=(-smp 1 -m "$VM_MEM" -nic none)
+		accel=(-accel tcg,thread=single -icount shift=0,align=off,sleep=off)
+		;;
+	*) die "PRUKIT_VM_CLOCK=$1: thread or lockstep" ;;
+	esac
+}
+clock_args "${PRUKIT_VM_CLOCK:-thread}"
 jitter=${PRUKIT_VM_JITTER:-random}
 if [ "$jitter" = random ]; then
 	jitter=$(( (RANDOM << 15 | RANDOM) + 1 ))
@@ -347,6 +376,8 @@ boot() {
 	[ "$name" != boot2 ] || name="$(basename "$(dirname "$dir")") (second boot)"
 	[ "$jitter" = 0 ] ||
 		msg "$name: the PRU-ICSS's jitter seed: $jitter (again: PRUKIT_VM_JITTER=$jitter)"
+	[ "${accel[2]:-}" != -icount ] ||
+		msg "$name: the PRUs in lockstep with the guest's virtual clock (${accel[*]:2}, one vCPU)"
 	rm -f "$dir/qemu.log"
 	rm -f "$indisk" "$outdisk"
 	if [ -n "$in" ]; then
@@ -361,7 +392,7 @@ boot() {
 	local start=$(date +%s) errexit=${-//[^e]/}
 	set +e
 	timeout --foreground "$VM_TIMEOUT" "$qemu" "${board[@]}" "${machine[@]}" \
-		-accel tcg,thread=multi -nographic -no-reboot \
+		"${accel[@]}" -nographic -no-reboot \
 		-kernel "$kimage/boot/vmlinuz-$kver" -initrd "$dir/initrd" \
 		-dtb "$dir/dtb/prukit.dtb" \
 		-append "$cmdline" \
@@ -606,32 +637,61 @@ run)
 	exit "$rc"
 	;;
 test)
-	kvers=${1:-5.10-ti 6.1 6.12 6.12-ti}
+	# SERIES@lockstep: that kernel booted with the PRUs in lockstep with
+	# the guest's virtual clock (clock_args), running LOCKSTEP_TESTS (or
+	# the TESTS asked for).  A lockstep boot's emulated ARM is several
+	# times slower than a threaded one's, so only these run in it.
+	kvers=${1:-6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti}
 	tests=${2:-}
 	# tests/vm/cases and every driver's drivers/<driver>/tests/vm/cases
 	# (scripts/lib.sh), all in the same boot.
 	cases=$(vm_cases) || die "VM test names must be unique"
-	if [ -z "$tests" ]; then
-		tests=$(awk '{ print $1 }' <<<"$cases" | paste -sd' ' -)
-	fi
-	[ -n "$tests" ] || die "no VM tests in tests/vm/cases or drivers/*/tests/vm/cases"
-	for t in $tests; do
+	for t in $tests $LOCKSTEP_TESTS; do
 		awk -v t="$t" '$1 == t { f = 1 } END { exit !f }' <<<"$cases" || die "no VM test $t"
 	done
+	# A test that checks what only lockstep does says so in a line
+	# "# prukit-vm: clock lockstep": a threaded boot runs it only if asked.
+	all_tests= lockstep_only=
+	while read -r t path; do
+		if grep -q '^# prukit-vm: clock lockstep' "$path"; then
+			lockstep_only+=" $t"
+		else
+			all_tests+=" $t"
+		fi
+	done <<<"$cases"
+	[ -n "$all_tests" ] || die "no VM tests in tests/vm/cases or drivers/*/tests/vm/cases"
 	# Every kernel's builds, device trees and initrds first, one at a time
 	# (builds use every CPU), then the boots, VM_JOBS at once, each into
 	# its directory's results; then, kernel by kernel, the host halves
 	# and the results.
-	declare -A kver_of kimage_of tag_of
+	declare -A kver_of kimage_of tag_of dir_of clock_of tests_of
 	for series in $kvers; do
-		build_prukit "$series"
+		clock=${PRUKIT_VM_CLOCK:-thread}
+		if [ "${series%@lockstep}" != "$series" ]; then
+			clock=lockstep
+		elif [ "${series#*@}" != "$series" ]; then
+			die "$series: a kernel, or a kernel@lockstep"
+		fi
+		build_prukit "${series%@lockstep}"
 		kver_of[$series]=$kver
 		kimage_of[$series]=$kimage
 		tag_of[$series]=$tag
 		dir=$PRUKIT_TOP/out/vm/$tag
+		[ "$series" = "${series%@lockstep}" ] || dir+=-lockstep
+		dir_of[$series]=$dir
+		clock_of[$series]=$clock
+		if [ -n "$tests" ]; then
+			tests_of[$series]=$tests
+		elif [ "$series" != "${series%@lockstep}" ]; then
+			tests_of[$series]=$LOCKSTEP_TESTS
+		elif [ "$clock" = lockstep ]; then
+			tests_of[$series]="${all_tests# }$lockstep_only"
+		else
+			tests_of[$series]=${all_tests# }
+		fi
 		mkdir -p "$dir"
 		make_dtb "$dir/dtb"
-		make_initrd "$dir" test "$tests"
+		make_initrd "$dir" test "${tests_of[$series]}"
 	done
 	running=0
 	for series in $kvers; do
@@ -641,11 +701,12 @@ test)
 		fi
 		kver=${kver_of[$series]}
 		kimage=${kimage_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/${tag_of[$series]}
+		dir=${dir_of[$series]}
 		msg "vmtest: booting $series ($kver)"
 		rm -rf "$dir/results" "$dir/seconds" "$dir/boot2"
 		(
 			set +e
+			clock_args "${clock_of[$series]}"
 			boot "$dir" "" "$dir/out" >"$dir/results"
 			kernel_log_clean "$dir" "$dir/out" >>"$dir/results"
 			second_boot "$dir" >>"$dir/results"
@@ -658,7 +719,7 @@ test)
 	total_f=0
 	for series in $kvers; do
 		kver=${kver_of[$series]}
-		dir=$PRUKIT_TOP/out/vm/${tag_of[$series]}
+		dir=${dir_of[$series]}
 		label=$series
 		res=$dir/results
 		# kernel_log_clean's line comes last: without it the boot's
@@ -669,7 +730,7 @@ test)
 			echo "FAIL: $kver: the second boot left no complete results (see $dir/boot2/console.log)" >>"$res"
 		# Host halves of tests, on what the guest brought back: each beside
 		# its case's cases/ directory, in host/ (vm_host_half).
-		for t in $tests; do
+		for t in ${tests_of[$series]}; do
 			host=$(awk -v t="$t" '$1 == t { print $2 }' <<<"$cases")
 			[ -n "$host" ] || continue
 			host=$(vm_host_half "$host")
