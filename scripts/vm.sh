@@ -664,7 +664,7 @@ test)
 	# (builds use every CPU), then the boots, VM_JOBS at once, each into
 	# its directory's results; then, kernel by kernel, the host halves
 	# and the results.
-	declare -A kver_of kimage_of tag_of dir_of clock_of tests_of
+	declare -A kver_of kimage_of dir_of clock_of tests_of
 	for series in $kvers; do
 		clock=${PRUKIT_VM_CLOCK:-thread}
 		if [ "${series%@lockstep}" != "$series" ]; then
@@ -675,7 +675,6 @@ test)
 		build_prukit "${series%@lockstep}"
 		kver_of[$series]=$kver
 		kimage_of[$series]=$kimage
-		tag_of[$series]=$tag
 		dir=$PRUKIT_TOP/out/vm/$tag
 		[ "$series" = "${series%@lockstep}" ] || dir+=-lockstep
 		dir_of[$series]=$dir
