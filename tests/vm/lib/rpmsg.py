@@ -7,6 +7,7 @@ import os
 import select
 import subprocess
 import sys
+import threading
 import time
 
 failed = False
@@ -188,6 +189,57 @@ def rproc_start_refused(core, firmware):
         err = e.errno
     log = subprocess.run(["dmesg"], capture_output=True, text=True).stdout.splitlines()[mark:]
     return err, log
+
+
+# ARM EABI system call numbers (the kernel's arch/arm/tools/syscall.tbl):
+# what a client blocked in read(2), write(2) or poll(2) sleeps in (glibc's
+# poll() is poll, ppoll or ppoll_time64)
+SYSCALLS = {"read": (3,), "write": (4,), "poll": (168, 336, 414)}
+
+
+def in_syscall(tid, name):
+    """True while thread tid of this process sleeps in system call name
+    (a key of SYSCALLS): /proc's syscall file names the call a task is in,
+    its stat file whether it sleeps."""
+    try:
+        with open("/proc/self/task/%d/syscall" % tid) as f:
+            nr = f.read().split()[0]
+        with open("/proc/self/task/%d/stat" % tid) as f:
+            state = f.read().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return False
+    return nr.isdigit() and int(nr) in SYSCALLS[name] and state in ("S", "D")
+
+
+def start_blocked(target, name, timeout=60):
+    """Run target() in a daemon thread and wait until it sleeps in system
+    call name (read, write or poll): a client blocked in the driver, not one
+    that has not got there yet.  Returns (thread, blocked): blocked is False
+    if target returned first, or did not block within timeout seconds."""
+    tid = []
+
+    def run():
+        tid.append(threading.get_native_id())
+        target()
+
+    t = threading.Thread(target=run, daemon=True)
+    t.start()
+    deadline = time.monotonic() + timeout
+    while t.is_alive() and time.monotonic() < deadline:
+        if tid and in_syscall(tid[0], name):
+            return t, True
+        time.sleep(0.01)
+    return t, False
+
+
+def wait_until(cond, timeout=60, step=0.05):
+    """Poll cond() until it is true or timeout seconds passed; its last value."""
+    deadline = time.monotonic() + timeout
+    while True:
+        v = cond()
+        if v or time.monotonic() >= deadline:
+            return v
+        time.sleep(step)
 
 
 def wait_for(path, present=True, timeout=120):
