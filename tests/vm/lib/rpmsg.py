@@ -197,18 +197,41 @@ def rproc_start_refused(core, firmware):
 SYSCALLS = {"read": (3,), "write": (4,), "poll": (168, 336, 414)}
 
 
-def in_syscall(tid, name):
-    """True while thread tid of this process sleeps in system call name
-    (a key of SYSCALLS): /proc's syscall file names the call a task is in,
-    its stat file whether it sleeps."""
+def _syscall_nr(tid):
+    """The system call number /proc's syscall file gives for thread tid of
+    this process, or None (it runs, or the file cannot be read)."""
     try:
         with open("/proc/self/task/%d/syscall" % tid) as f:
             nr = f.read().split()[0]
+    except (OSError, IndexError):
+        return None
+    return int(nr) if nr.isdigit() else None
+
+
+# Before 6.1 ARM records a task's system call number only when the call is
+# traced (5.10's entry code), so the file names the call only where it
+# names this read(2) of itself.
+SYSCALL_NR_KNOWN = _syscall_nr(threading.get_native_id()) == SYSCALLS["read"][0]
+
+
+def in_syscall(tid, name):
+    """True while thread tid of this process sleeps in system call name
+    (a key of SYSCALLS).  /proc's stat file says whether it sleeps, its
+    syscall file in which call; where the kernel does not record that
+    (SYSCALL_NR_KNOWN false), its wchan must at least not be a futex (a
+    thread waiting for the interpreter's lock) or a sleep of its own."""
+    try:
         with open("/proc/self/task/%d/stat" % tid) as f:
             state = f.read().rsplit(")", 1)[1].split()[0]
+        with open("/proc/self/task/%d/wchan" % tid) as f:
+            wchan = f.read().strip()
     except (OSError, IndexError):
         return False
-    return nr.isdigit() and int(nr) in SYSCALLS[name] and state in ("S", "D")
+    if state not in ("S", "D"):
+        return False
+    if SYSCALL_NR_KNOWN:
+        return _syscall_nr(tid) in SYSCALLS[name]
+    return wchan not in ("", "0") and not any(w in wchan for w in ("futex", "nanosleep"))
 
 
 def start_blocked(target, name, timeout=60):
