@@ -150,6 +150,8 @@ static uint32_t port_stats(AM335xPrussState *p)
     prusim_host_read(p->s, ICSS_INTC_CMR(0), cmr, sizeof(cmr));
     prusim_host_read(p->s, ICSS_INTC_HMR(0), hmr, sizeof(hmr));
     port_add(p, &len, "cycles %" PRIu64 "\n", p->s->now);
+    /* every core waits for the ARM: simulated time stands still */
+    port_add(p, &len, "idle %s\n", p->runnable ? "no" : "yes");
     port_add(p, &len, "host_ns %" PRIu64 "\n", p->host_ns);
     for (i = 0; i < PRUSIM_NUM_CORES; i++) {
         struct prusim_status st;

@@ -227,11 +227,17 @@ def in_syscall(tid, name):
             wchan = f.read().strip()
     except (OSError, IndexError):
         return False
+    nr = _syscall_nr(tid) if SYSCALL_NR_KNOWN else None
+    LAST_SEEN[tid] = (state, wchan, nr)
     if state not in ("S", "D"):
         return False
     if SYSCALL_NR_KNOWN:
-        return _syscall_nr(tid) in SYSCALLS[name]
+        return nr in SYSCALLS[name]
     return wchan not in ("", "0") and not any(w in wchan for w in ("futex", "nanosleep"))
+
+
+# what in_syscall() last saw of each thread: (state, wchan, syscall number)
+LAST_SEEN = {}
 
 
 def start_blocked(target, name, timeout=60):
@@ -248,10 +254,21 @@ def start_blocked(target, name, timeout=60):
     t = threading.Thread(target=run, daemon=True)
     t.start()
     deadline = time.monotonic() + timeout
+    looks = 0
     while t.is_alive() and time.monotonic() < deadline:
         if tid and in_syscall(tid[0], name):
             return t, True
-        time.sleep(0.01)
+        looks += 1
+        if looks % 2:
+            # one CPU (an AM335x, a lockstep boot): a client that polls its
+            # firmware with short sleeps is runnable whenever this thread
+            # runs, and woken with it; give it the CPU, then look again
+            os.sched_yield()
+        else:
+            time.sleep(0.01)
+    info("not seen asleep in %s (%s after %d looks): last seen state, wchan, call %s" %
+         (name, "it returned" if not t.is_alive() else "timed out", looks,
+          LAST_SEEN.get(tid[0]) if tid else "never started"))
     return t, False
 
 
