@@ -46,16 +46,21 @@ prusim_check() {
 }
 
 # The QEMU of the VM's board path: Debian's 7.2 with prukit's PRU-ICSS
-# (scripts/qemu-build.sh; about 10 CPU minutes cold, then cached).
+# (scripts/qemu-build.sh; about 10 CPU minutes cold, then cached), and
+# with qemu/arm-dacr.patch: a bare-metal program checks that loads, stores
+# and fetches still fault exactly as DACR says (tests/qemu/dacr).
 qemu_check() {
-	local bin
+	local bin rc=0
 	bin=$(scripts/qemu-build.sh) || { echo "FAIL: scripts/qemu-build.sh"; return 1; }
 	if "$bin" -M vexpress-a15,help 2>&1 | grep -q '^ *pruss='; then
 		echo "PASS: qemu-system-arm with the AM335x PRU-ICSS (-M vexpress-a15,pruss=on): $bin"
 	else
 		echo "FAIL: $bin has no vexpress-a15 option pruss"
-		return 1
+		rc=1
 	fi
+	need_pkgs gcc-arm-linux-gnueabihf
+	tests/qemu/dacr/run.sh "$bin" out/tests/qemu-dacr || rc=1
+	return $rc
 }
 
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
@@ -67,7 +72,7 @@ step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
 # own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU
 # drivers (Documentation/kernels.rst)
 step kernels 31 scripts/kernels.sh 5.10 6.1 6.12 5.10-ti 6.12-ti	# [33]
-step qemu 1 qemu_check					# [1]
+step qemu 20 qemu_check					# [21]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti

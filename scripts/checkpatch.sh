@@ -5,7 +5,8 @@
 # code, simulator, tools and PRU firmware alike), with the checkpatch.pl of
 # Debian's linux-source-6.1; and the QEMU device in qemu/, which is QEMU
 # code, with QEMU's own checkpatch.pl --strict (of the QEMU source
-# scripts/qemu-build.sh builds).  One PASS/FAIL line per file.
+# scripts/qemu-build.sh builds), as are the patches to QEMU there.  One
+# PASS/FAIL line per file.
 #
 # Exceptions, and only these:
 # - include/compat.h exists to compare LINUX_VERSION_CODE, so the two
@@ -24,6 +25,8 @@ cp=(perl "$src/scripts/checkpatch.pl" --strict --no-tree --terse --show-types --
     --max-line-length=100 -f)
 qsrc=$("$PRUKIT_TOP/scripts/qemu-build.sh" --source)
 qcp=(perl "$qsrc/scripts/checkpatch.pl" --strict --no-tree --terse --no-summary --color=never -f)
+# the same for qemu/*.patch, changes to QEMU's own files (no sign-off: not mailed)
+qcp_patch=("${qcp[@]:0:${#qcp[@]}-1}" --no-signoff)
 
 # check_file FILE: checkpatch's findings on FILE, then its PASS:/FAIL: line.
 check_file() {
@@ -35,6 +38,15 @@ check_file() {
 	sim/prusim_platform.h)
 		# Its userspace half defines what <linux/compiler.h> would.
 		ignore=(--ignore PREFER_KERNEL_TYPES,PREFER_DEFINED_ATTRIBUTE_MACRO,COMPLEX_MACRO) ;;
+	qemu/*.patch)
+		if out=$("${qcp_patch[@]}" "$f" 2>&1) && [ -z "$out" ]; then
+			echo "PASS: checkpatch (QEMU's) $f"
+		else
+			printf '%s\n' "$out"
+			echo "FAIL: checkpatch (QEMU's) $f"
+		fi
+		return
+		;;
 	qemu/*)
 		if out=$("${qcp[@]}" "$f" 2>&1) && [ -z "$out" ]; then
 			echo "PASS: checkpatch (QEMU's) $f"
@@ -66,7 +78,7 @@ while IFS= read -r f; do
 	done
 	n=$((n + 1))
 	check_file "$f" >"$tmp/$n" 2>&1 &
-done < <(git ls-files --cached --others --exclude-standard -- '*.c' '*.h' | sort)
+done < <(git ls-files --cached --others --exclude-standard -- '*.c' '*.h' 'qemu/*.patch' | sort)
 wait
 failed=0
 for i in $(seq 1 "$n"); do

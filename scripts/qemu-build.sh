@@ -19,6 +19,13 @@
 # bookworm's own qemu-system-arm, which the VM used before.  The VM boots
 # this binary.
 #
+# Two patches: qemu/vexpress-pruss.patch hooks the device into vexpress-a15;
+# qemu/arm-dacr.patch changes QEMU's ARM emulation itself, so that a DACR
+# write (twice per system call and per copy to or from user space in the
+# guest's kernels) flushes only what it can make wrong instead of the whole
+# TLB and jump cache (tests/qemu/dacr checks that every access still faults
+# or not as the architecture says).
+#
 # Only the arm system emulator, with only the vexpress boards, no tools,
 # no docs (configure as below); about 10 CPU minutes cold.  The binary is
 # cached in $PRUKIT_CACHE/qemu/<source version>-<hash>/, the hash taken over
@@ -58,7 +65,7 @@ fi
 # The configured source tree is kept (keyed on the source version and the
 # patch), so that a change to the device or the simulator rebuilds only
 # what it touches (about 20 s).
-tree=$PRUKIT_CACHE/qemu/src-$upstream-$( (cat "$PRUKIT_TOP/qemu/vexpress-pruss.patch"; sed -n '/^# configure:/,/^# end configure/p' "$0") |
+tree=$PRUKIT_CACHE/qemu/src-$upstream-$( (cat "$PRUKIT_TOP"/qemu/*.patch; sed -n '/^# configure:/,/^# end configure/p' "$0") |
 	sha256sum | cut -c1-16)
 src=$tree/src
 if [ ! -e "$tree/.unpacked" ]; then
@@ -70,7 +77,9 @@ if [ ! -e "$tree/.unpacked" ]; then
 	msg "unpacking $dsc (with Debian's patches)"
 	run_logged "$tree/unpack.log" dpkg-source -x "$dsc" "$src"
 	rm -f "$tree"/qemu_*
-	(cd "$src" && run_logged "$tree/patch.log" patch -p1 -i "$PRUKIT_TOP/qemu/vexpress-pruss.patch")
+	for p in vexpress-pruss arm-dacr; do
+		(cd "$src" && run_logged "$tree/patch-$p.log" patch -p1 -i "$PRUKIT_TOP/qemu/$p.patch")
+	done
 	mkdir -p "$src/hw/misc/prusim"
 	# configure: only the vexpress boards (and what 7.2's Kconfig asks for
 	# with them), only the arm system emulator, no tools, no docs
@@ -115,10 +124,12 @@ fi
 msg "building qemu-system-arm $upstream with the AM335x PRU-ICSS (cold: about 10 CPU minutes)"
 start=$(date +%s)
 run_logged "$tree/build.log" ninja -C "$src/build" -j"$(ncpus)" qemu-system-arm
-# The device must compile without a warning (the build does not use -Werror).
-if grep -E 'am335x_pruss|prusim/' "$tree/build.log" | grep -q 'warning:'; then
-	grep -E -A3 '(am335x_pruss|prusim/).*warning:' "$tree/build.log" >&2
-	die "the PRU-ICSS device or the simulator compiled with warnings (see $tree/build.log)"
+# The device, the simulator and the files arm-dacr.patch changes must
+# compile without a warning (the build does not use -Werror).
+ours='(am335x_pruss|prusim/|target/arm/(helper|ptw|tlb_helper)\.c|accel/tcg/cputlb\.c)'
+if grep -E "$ours" "$tree/build.log" | grep -q 'warning:'; then
+	grep -E -A3 "$ours.*warning:" "$tree/build.log" >&2
+	die "the PRU-ICSS device, the simulator or a file prukit patches compiled with warnings (see $tree/build.log)"
 fi
 "$src/build/qemu-system-arm" -M vexpress-a15,help 2>&1 | grep -q '^ *pruss=' ||
 	die "the built qemu-system-arm has no vexpress-a15 option pruss"
