@@ -16,11 +16,12 @@
 #                         make check validates them (scripts/overlays.sh --check)
 #   make tools            host tools (prusim)
 #   make kunit            KUnit suites on UML with KASAN and lockdep
-#   make vmtest           VM tests on 5.10-ti, 6.1, 6.12, 6.12-ti, and 6.1 with the PRUs
-#                         in lockstep with the guest's clock [KVERS=...] [TESTS=...]:
-#                         the kernel's own PRU drivers on the QEMU PRU-ICSS; any of
-#                         5.10 6.1 6.12 5.10-ti 6.12-ti (Documentation/kernels.rst), each
-#                         also as SERIES@lockstep (Documentation/qemu-pruss.rst)
+#   make vmtest           VM tests on 6.12-ti, 6.12, 6.1, 5.10-ti with the PRUs in lockstep
+#                         with the guest's clock, and a few on 6.1 with them on their own
+#                         thread [KVERS=...] [TESTS=...]: the kernel's own PRU drivers on
+#                         the QEMU PRU-ICSS; any of 5.10 6.1 6.12 5.10-ti 6.12-ti
+#                         (Documentation/kernels.rst), each also as SERIES@thread or
+#                         SERIES@lockstep (Documentation/qemu-pruss.rst)
 #   make vmdeb            [KVER=6.1]: make deb's packages on a Debian root in the VM,
 #                         installed with apt (DKMS in the guest), used, removed, purged
 #   make vmrun            KVER=6.1 SCRIPT=path [IN=dir] [OUT=dir]: one script in the VM
@@ -191,7 +192,7 @@ kunit:
 	$(SCRIPTS)/kunit.sh
 
 vmtest:
-	$(SCRIPTS)/vm.sh test "$(or $(KVERS),6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti)" "$(TESTS)"
+	$(SCRIPTS)/vm.sh test "$(or $(KVERS),6.12-ti 6.12 6.1 5.10-ti 6.1@thread)" "$(TESTS)"
 
 # The Debian packages in the VM: installed, used, removed, purged (6.1)
 vmdeb:

@@ -54,6 +54,11 @@
 # firmware are built first (a fresh clone needs nothing else).
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
+# The VM parts boot with the PRUs on their own thread (vm.sh's threaded
+# clock, not make vmtest's lockstep default): the model's speed is the
+# simulation thread's, comparable with earlier figures, and the stress is
+# timed for it.  PRUKIT_VM_CLOCK=lockstep make bench runs them in lockstep.
+export PRUKIT_VM_CLOCK=${PRUKIT_VM_CLOCK:-thread}
 
 ALL_PARTS="prusim rpmsg-fw ws281x beaglelogic hub75 pwm encoder pixeld vm stress"
 for p in "$@"; do

@@ -94,10 +94,11 @@ done 3< <(driver_checks)
 step kunit 14 scripts/kunit.sh				# [15]
 # The VM tests on the kernels boards run and on mainline's drivers: BeagleBoard's
 # 5.10-ti, Debian's 6.1 and 6.12, and 6.12 with TI's PRU drivers (Debian's
-# 5.10 is left to "make vmtest KVERS=5.10": a board on 5.10 runs TI's); and
-# 6.1 with the PRUs in lockstep with the guest's clock, its few tests first
-# (beside 5.10-ti's boot: it keeps one CPU busy, not two)
-step vmtest 5600 scripts/vm.sh test "6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti"	# [~5850], 4 kernels, one boot each (and a second for 71)
+# 5.10 is left to "make vmtest KVERS=5.10": a board on 5.10 runs TI's), each
+# with the PRUs in lockstep with the guest's clock (one CPU a boot, the
+# longest first); and a few tests on 6.1 with the PRUs on their own thread,
+# the clock make bench and make vmdeb use.
+step vmtest 5600 scripts/vm.sh test "6.12-ti 6.12 6.1 5.10-ti 6.1@thread"	# [~7600], 4 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
 # upgraded, used, removed, purged (cold: debootstrap's second stage in the
 # VM first, about 8 minutes once).

@@ -26,9 +26,10 @@
 #	PRUKIT_VM_OVERLAYS="a.dtso b.dtso" (make vmrun OVERLAY=...) those
 #	overlays are built and applied after prukit's own.
 #   vm.sh test [KVERS] [TESTS]         (make vmtest)
-#	For each kernel (default: 6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti;
-#	SERIES@lockstep is SERIES with PRUKIT_VM_CLOCK=lockstep running
-#	LOCKSTEP_TESTS), boot once and run the tests in tests/vm/cases and
+#	For each kernel (default: 6.12-ti 6.12 6.1 5.10-ti 6.1@thread, the
+#	longest first; SERIES@thread and SERIES@lockstep are SERIES on that
+#	clock whatever PRUKIT_VM_CLOCK says, SERIES@thread running
+#	THREAD_TESTS), boot once and run the tests in tests/vm/cases and
 #	drivers/<driver>/tests/vm/cases of drivers/registry's drivers (all,
 #	or those named in TESTS), bring back
 #	their logs and artifacts to out/vm/<kernel>/ and print "N passed, N
@@ -57,11 +58,14 @@
 # store over the OCP master port takes to land in RAM (0: at once).
 # PRUKIT_VM_DDR_JITTER=CYCLES (default 0): while the jitter seed is not 0,
 # each DDR load or store of a PRU takes up to this many cycles longer.
-# PRUKIT_VM_CLOCK=thread (the default) or lockstep: the simulated PRUs run
-# on a thread of their own as fast as the host lets them, or in lockstep
-# with the guest's virtual clock (QEMU's -icount shift=0: one ARM
-# instruction a nanosecond, a PRU cycle every five; the vCPUs and the PRUs
-# take turns on one thread).
+# PRUKIT_VM_CLOCK=lockstep (the default) or thread: the simulated PRUs run
+# in lockstep with the guest's virtual clock (QEMU's -icount shift=0: one
+# ARM instruction a nanosecond, a PRU cycle every five; the vCPU and the
+# PRUs take turns on one thread), so that a loaded host slows both alike,
+# or on a thread of their own as fast as the host lets them, beside two
+# vCPUs.  vm.sh deb always boots threaded (see deb_test).  PRUKIT_QEMU=PATH boots another build of
+# qemu-system-arm (one with pruss=on, e.g. to compare two builds' speed)
+# instead of scripts/qemu-build.sh's.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
@@ -73,12 +77,12 @@ need_pkgs device-tree-compiler cpio kmod tar sigrok-cli
 # 55% steal time: 6.12 took 749 s in its tests alone).  The bound is for a
 # hung guest, not a slow one.
 VM_TIMEOUT=${VM_TIMEOUT:-2400}
-# What a lockstep boot of make vmtest runs (SERIES@lockstep below): the
-# clock's own check, then the interrupts of a 10 us burst and rpmsg with
-# the ARM and the PRUs at a board's ratio.
-LOCKSTEP_TESTS=${LOCKSTEP_TESTS:-10-boot 17-clock 65-pru-consumer 70-rpmsg-echo}
-# A guest keeps about one host CPU busy, not two (its simulated PRU is one
-# thread; a 6.12 boot of every test used 1.1 CPUs on average), so vm.sh test
+# What a threaded boot of make vmtest runs (SERIES@thread below), to keep
+# the threaded clock that make bench and make vmdeb use working: the
+# interrupts of a 10 us burst through the hold, and rpmsg.
+THREAD_TESTS=${THREAD_TESTS:-10-boot 60-irq 65-pru-consumer 70-rpmsg-echo}
+# A guest keeps about one host CPU busy, not two (a lockstep guest is one
+# thread; a threaded 6.12 boot of every test used 1.1 CPUs on average), so vm.sh test
 # boots as many kernels at once as the host has CPUs: on 2 CPUs, 5.10 and
 # 6.1 together took 753 s where each alone takes about 700.
 VM_JOBS=${VM_JOBS:-$(ncpus)}
@@ -120,7 +124,7 @@ clock_args() {
 	*) die "PRUKIT_VM_CLOCK=$1: thread or lockstep" ;;
 	esac
 }
-clock_args "${PRUKIT_VM_CLOCK:-thread}"
+clock_args "${PRUKIT_VM_CLOCK:-lockstep}"
 jitter=${PRUKIT_VM_JITTER:-random}
 if [ "$jitter" = random ]; then
 	jitter=$(( (RANDOM << 15 | RANDOM) + 1 ))
@@ -148,7 +152,7 @@ export QEMU_AUDIO_DRV=none
 splat_re='Oops|BUG:|WARNING:|Unable to handle kernel|Kernel panic|INFO: task .* blocked|possible (recursive|circular) locking|UBSAN:|refcount_t:|list_(add|del) corruption|general protection|stack-protector|pagealloc: memory corruption|blocked for more than'
 
 # The QEMU: Debian's 7.2 with prukit's PRU-ICSS (scripts/qemu-build.sh).
-qemu=
+qemu=${PRUKIT_QEMU:-}
 qemu_binary() {
 	[ -n "$qemu" ] || qemu=$("$PRUKIT_TOP/scripts/qemu-build.sh") ||
 		die "building qemu-system-arm failed"
@@ -614,6 +618,10 @@ cmd=${1:-}
 shift || true
 case $cmd in
 deb)
+	# Threaded whatever PRUKIT_VM_CLOCK says: DKMS builds every module in
+	# the guest twice, on both vCPUs, and the test is of the packages,
+	# not of the PRUs' timing (make vmtest's boots are lockstep).
+	clock_args thread
 	deb_test "${1:-6.1}"
 	;;
 run)
@@ -637,16 +645,16 @@ run)
 	exit "$rc"
 	;;
 test)
-	# SERIES@lockstep: that kernel booted with the PRUs in lockstep with
-	# the guest's virtual clock (clock_args), running LOCKSTEP_TESTS (or
-	# the TESTS asked for).  A lockstep boot's emulated ARM is several
-	# times slower than a threaded one's, so only these run in it.
-	kvers=${1:-6.1@lockstep 5.10-ti 6.1 6.12 6.12-ti}
+	# SERIES@thread: that kernel booted with the PRUs on their own
+	# thread (clock_args), running THREAD_TESTS (or the TESTS asked for);
+	# SERIES@lockstep: in lockstep, running every test.  The longest
+	# boots first, so that the last VM_JOBS end close together.
+	kvers=${1:-6.12-ti 6.12 6.1 5.10-ti 6.1@thread}
 	tests=${2:-}
 	# tests/vm/cases and every driver's drivers/<driver>/tests/vm/cases
 	# (scripts/lib.sh), all in the same boot.
 	cases=$(vm_cases) || die "VM test names must be unique"
-	for t in $tests $LOCKSTEP_TESTS; do
+	for t in $tests $THREAD_TESTS; do
 		awk -v t="$t" '$1 == t { f = 1 } END { exit !f }' <<<"$cases" || die "no VM test $t"
 	done
 	# A test that checks what only lockstep does says so in a line
@@ -666,23 +674,22 @@ test)
 	# and the results.
 	declare -A kver_of kimage_of dir_of clock_of tests_of
 	for series in $kvers; do
-		clock=${PRUKIT_VM_CLOCK:-thread}
-		if [ "${series%@lockstep}" != "$series" ]; then
-			clock=lockstep
-		elif [ "${series#*@}" != "$series" ]; then
-			die "$series: a kernel, or a kernel@lockstep"
-		fi
-		build_prukit "${series%@lockstep}"
+		clock=${PRUKIT_VM_CLOCK:-lockstep}
+		case $series in
+		*@thread | *@lockstep) clock=${series#*@} ;;
+		*@*) die "$series: a kernel, a kernel@thread or a kernel@lockstep" ;;
+		esac
+		build_prukit "${series%@*}"
 		kver_of[$series]=$kver
 		kimage_of[$series]=$kimage
 		dir=$PRUKIT_TOP/out/vm/$tag
-		[ "$series" = "${series%@lockstep}" ] || dir+=-lockstep
+		[ "$series" = "${series%@*}" ] || dir+=-$clock
 		dir_of[$series]=$dir
 		clock_of[$series]=$clock
 		if [ -n "$tests" ]; then
 			tests_of[$series]=$tests
-		elif [ "$series" != "${series%@lockstep}" ]; then
-			tests_of[$series]=$LOCKSTEP_TESTS
+		elif [ "${series%@thread}" != "$series" ]; then
+			tests_of[$series]=$THREAD_TESTS
 		elif [ "$clock" = lockstep ]; then
 			tests_of[$series]="${all_tests# }$lockstep_only"
 		else
