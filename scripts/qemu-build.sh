@@ -138,7 +138,8 @@ install -m 0755 "$src/build/qemu-system-arm" "$bin.tmp"
 mv "$bin.tmp" "$bin"
 echo "$version" >"$dest/source-version"
 msg "qemu-system-arm built in $(( $(date +%s) - start )) s: $bin"
-# older builds of the same source
-find "$PRUKIT_CACHE/qemu" -maxdepth 1 -name "$upstream-*" ! -name "$upstream-$hash" \
-	-exec rm -rf {} +
+# older builds of the same source, and the source trees of older patches
+# (about 400 MB each)
+find "$PRUKIT_CACHE/qemu" -maxdepth 1 \( -name "$upstream-*" ! -name "$upstream-$hash" -o \
+	-name "src-$upstream-*" ! -name "${tree##*/}" \) -exec rm -rf {} +
 echo "$bin"

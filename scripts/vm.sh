@@ -63,20 +63,22 @@
 # ARM instruction a nanosecond, a PRU cycle every five; the vCPU and the
 # PRUs take turns on one thread), so that a loaded host slows both alike,
 # or on a thread of their own as fast as the host lets them, beside two
-# vCPUs.  vm.sh deb always boots threaded (see deb_test).  PRUKIT_QEMU=PATH boots another build of
-# qemu-system-arm (one with pruss=on, e.g. to compare two builds' speed)
-# instead of scripts/qemu-build.sh's.
+# vCPUs.  vm.sh deb always boots threaded (see deb_test).
+# PRUKIT_QEMU=PATH boots another build of qemu-system-arm (one with
+# pruss=on, e.g. to compare two builds' speed) instead of
+# scripts/qemu-build.sh's.
 set -euo pipefail
 . "$(dirname "$0")/lib.sh"
 
 need_pkgs device-tree-compiler cpio kmod tar sigrok-cli
 . "$(dirname "$0")/papt.sh"
 
-# One boot runs every VM test of a kernel: about 8 minutes on an idle
-# 2-core machine, but over 15 when the host's CPUs are shared (measured with
-# 55% steal time: 6.12 took 749 s in its tests alone).  The bound is for a
-# hung guest, not a slow one.
-VM_TIMEOUT=${VM_TIMEOUT:-2400}
+# One boot runs every VM test of a kernel: in lockstep about 15-19 minutes
+# on the 2-core machine, two boots at a time, and a host whose CPUs are
+# shared can take twice that (threaded boots, measured with 55% steal
+# time: 6.12 took 749 s in its tests alone, about 8 minutes idle).  The
+# bound is for a hung guest, not a slow one.
+VM_TIMEOUT=${VM_TIMEOUT:-3600}
 # What a threaded boot of make vmtest runs (SERIES@thread below), to keep
 # the threaded clock that make bench and make vmdeb use working: the
 # interrupts of a 10 us burst through the hold, and rpmsg.
