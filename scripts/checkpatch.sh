@@ -38,17 +38,10 @@ check_file() {
 	sim/prusim_platform.h)
 		# Its userspace half defines what <linux/compiler.h> would.
 		ignore=(--ignore PREFER_KERNEL_TYPES,PREFER_DEFINED_ATTRIBUTE_MACRO,COMPLEX_MACRO) ;;
-	qemu/*.patch)
-		if out=$("${qcp_patch[@]}" "$f" 2>&1) && [ -z "$out" ]; then
-			echo "PASS: checkpatch (QEMU's) $f"
-		else
-			printf '%s\n' "$out"
-			echo "FAIL: checkpatch (QEMU's) $f"
-		fi
-		return
-		;;
 	qemu/*)
-		if out=$("${qcp[@]}" "$f" 2>&1) && [ -z "$out" ]; then
+		local q=("${qcp[@]}")
+		[ "${f%.patch}" = "$f" ] || q=("${qcp_patch[@]}")
+		if out=$("${q[@]}" "$f" 2>&1) && [ -z "$out" ]; then
 			echo "PASS: checkpatch (QEMU's) $f"
 		else
 			printf '%s\n' "$out"

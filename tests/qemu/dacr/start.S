@@ -111,23 +111,19 @@ unexpected:
  * stack, let fault_entry(kind, frame) record the fault and rewrite frame
  * r0 and pc, then return there with CPSR from SPSR_abt.
  */
-dabt_entry:
-	sub	lr, lr, #8		@ LR_abt = aborted instruction + 8
+	.macro	abort_entry name, lr_ahead, kind
+\name:
+	sub	lr, lr, #\lr_ahead	@ LR_abt = aborted instruction + lr_ahead
 	push	{r0-r3, r12, lr}
-	mov	r0, #DATA_ABORT
+	mov	r0, #\kind
 	mov	r1, sp
 	bl	fault_entry
 	pop	{r0-r3, r12, lr}
 	movs	pc, lr
+	.endm
 
-pabt_entry:
-	sub	lr, lr, #4		@ LR_abt = aborted instruction + 4
-	push	{r0-r3, r12, lr}
-	mov	r0, #PREFETCH_ABORT
-	mov	r1, sp
-	bl	fault_entry
-	pop	{r0-r3, r12, lr}
-	movs	pc, lr
+	abort_entry dabt_entry, 8, DATA_ABORT
+	abort_entry pabt_entry, 4, PREFETCH_ABORT
 
 /* u32 probe_ldr(u32 addr): one load from addr. */
 	.global	probe_ldr, probe_ldr_insn
