@@ -100,8 +100,8 @@ step kunit 14 scripts/kunit.sh				# [15]
 # the clock make bench and make vmdeb use.
 step vmtest 5600 scripts/vm.sh test "6.12-ti 6.12 6.1 5.10-ti 6.1@thread"	# [~7600], 4 kernels, one boot each (and a second for 71)
 # The Debian packages on a Debian root in the VM (6.1): installed with apt,
-# upgraded, used, removed, purged (cold: debootstrap's second stage in the
-# VM first, about 8 minutes once).
+# upgraded, used, removed, purged (cold: debootstrap's second stage first,
+# once: here under qemu-user, about 2.5 minutes, or in the VM, about 7).
 step vmdeb 24 scripts/vm.sh deb 6.1			# [26]
 # The harness again: make vmrun, vmtest and bench from a copy with no out/
 # (after the VM tests, so that a cold run has its QEMU and kernels cached).
