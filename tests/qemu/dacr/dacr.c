@@ -13,6 +13,20 @@
  *   SECT_OTHER domain 2, PL1 read/write         data only
  *   SECT_XN    domain 1, PL1 read/write, XN     a copied "return 42"
  *   SECT_PAGES domain 1, 4 KB pages, PL1 r/w    data and a "return 42"
+ *   SECT_USER  domain 3, PL0+PL1 r/w, exec      user "return 42"s, data
+ *   SECT_UPROBE domain 0, PL0+PL1 r/w, exec     the user-mode load probe,
+ *                                               the CPS gate, user stack
+ *   SECT_UPRIV domain 3, PL1 r/w, exec          a user "return 42", data
+ *
+ * The user-mode checks run code in USR mode (PL0) as Linux does: entered
+ * by an exception return (or CPS), left by an SVC, with DACR changed at
+ * PL1 in between; a QEMU that keeps PL0 code in its jump cache, or PL0 and
+ * PL1 translations in their TLBs, across such a write must still abort
+ * every PL0 fetch and every PL0 or PL1 access that the new value forbids.
+ *
+ * Sections of this file: CP15, semihosting output, checks (the PL1 ones,
+ * 1-8, then the user-mode ones, 9-17, then 18: readback), exceptions,
+ * setup and main().
  *
  * Output and exit go through ARM semihosting.  Each check prints
  * "dacr: result NAME pass|fail DETAIL"; the last line is "dacr: end" and
@@ -31,12 +45,23 @@
 #define SECT_OTHER	0x80700000u
 #define SECT_XN		0x80800000u
 #define SECT_PAGES	0x80900000u
+#define SECT_USER	0x80a00000u
+#define SECT_UPROBE	0x80b00000u
+#define SECT_UPRIV	0x80c00000u
+
+/* What SECT_UPROBE holds; domain 0 stays client, so they always work. */
+#define UPROBE_LDR	(SECT_UPROBE + 0x0)
+#define UPROBE_GATE	(SECT_UPROBE + 0x100)
+#define USER_STACK_TOP	(SECT_UPROBE + 0x100000)
 
 /* DACR fields: domain 0 is always client, it holds this program. */
 #define D_NOACCESS	0u
 #define D_CLIENT	1u
 #define D_MANAGER	3u
 #define DACR(d1, d2)	(D_CLIENT | (d1) << 2 | (d2) << 4)
+/* Domain 3 holds the user-mode test megabytes; DACR() leaves it noaccess. */
+#define DACR3(d1, d2, d3)	(DACR(d1, d2) | (d3) << 6)
+#define U_DACR(d3)	DACR3(D_CLIENT, D_CLIENT, d3)
 
 /* Short-descriptor fault status (FS[4] is FSR bit 10). */
 #define FS_DOMAIN_SECT	0x09
@@ -58,6 +83,7 @@
 #define SD_NORMAL_WB	(SD_TEX(1) | SD_C | SD_B)
 #define SD_PL1_RW	SD_AP(1)
 #define SD_PL1_RO	(SD_APX | SD_AP(1))
+#define SD_PL0_RW	SD_AP(3)	/* and PL1 read/write */
 
 /* First-level page table descriptor, second-level small page bits. */
 #define L1_PAGE_TABLE	0x1u
@@ -72,10 +98,16 @@
 #define SCTLR_Z		BIT(11)
 #define SCTLR_I		BIT(12)
 #define SCTLR_V		BIT(13)
+#define SCTLR_WXN	BIT(19)
+#define SCTLR_UWXN	BIT(20)
 #define SCTLR_TRE	BIT(28)
 #define SCTLR_AFE	BIT(29)
 
 #define NO_FAULT	0	/* besides DATA_ABORT and PREFETCH_ABORT */
+
+#define MODE_MASK	0x1fu
+#define MODE_USR	0x10u
+#define MODE_SVC	0x13u
 
 /*
  * The last recorded abort, and where a prefetch abort is expected.
@@ -86,7 +118,9 @@ static struct {
 	u32 kind, fsr, far;
 } fault;
 static u32 call_target;
+static u32 user_target;		/* the same for a USR-mode function */
 static u32 faults_taken;
+static u32 svc_unread;		/* user SVCs that vec_svc could not read */
 
 /* The running check. */
 static const char *check;
@@ -124,6 +158,19 @@ CP15_WRITE(bpiall, "0, %0, c7, c5, 6")
 CP15_WRITE(dccmvau, "0, %0, c7, c11, 1")
 CP15_WRITE(tlbiall, "0, %0, c8, c7, 0")
 CP15_WRITE(vbar, "0, %0, c12, c0, 0")
+
+static inline u32 read_spsr(void)
+{
+	u32 v;
+
+	asm volatile("mrs %0, spsr" : "=r"(v));
+	return v;
+}
+
+static inline void write_spsr(u32 v)
+{
+	asm volatile("msr spsr_cxsf, %0" :: "r"(v) : "memory");
+}
 
 static inline void dsb(void) { asm volatile("dsb" ::: "memory"); }
 static inline void isb(void) { asm volatile("isb" ::: "memory"); }
@@ -295,7 +342,7 @@ static void report(const char *fmt, ...)
 	emit(&b);
 }
 
-/* Every DACR write goes through here, and is read back (check 9). */
+/* Every DACR write goes through here, and is read back (check 18). */
 static void set_dacr(u32 v)
 {
 	u32 got;
@@ -427,11 +474,12 @@ static int call_faults(u32 fn, u32 fs)
 	return 1;
 }
 
-/* Copy the "return 42" function to addr and make it fetchable. */
-static void put_fn42(u32 addr)
+/* Copy the code from start to end to addr and make it fetchable. */
+static void put_code(u32 addr, const char *start, const char *end)
 {
-	u32 *src = (u32 *)fn42_start, *dst = (u32 *)addr;
-	u32 n = (u32)(fn42_end - fn42_start) / 4;
+	const u32 *src = (const u32 *)start;
+	u32 *dst = (u32 *)addr;
+	u32 n = (u32)(end - start) / 4;
 
 	for (u32 i = 0; i < n; i++)
 		dst[i] = src[i];
@@ -442,6 +490,12 @@ static void put_fn42(u32 addr)
 	write_bpiall(0);
 	dsb();
 	isb();
+}
+
+/* Copy the "return 42" function to addr. */
+static void put_fn42(u32 addr)
+{
+	put_code(addr, fn42_start, fn42_end);
 }
 
 /* The function's words, read as data. */
@@ -758,8 +812,550 @@ static void check_page_domain(void)
 	       rounds, ok, faulted);
 }
 
+/* --- User-mode checks ---------------------------------------------------- */
+
+/* What the user-mode checks use in SECT_USER and SECT_UPRIV. */
+#define UFN		(SECT_USER + 0x40)
+#define UFN2		(SECT_USER + 0x5080)	/* another page */
+#define UPRIV_FN	(SECT_UPRIV + 0x40)
+#define UPRIV_DATA	(SECT_UPRIV + 0x3000)
+#define USER_CALLS	1000
+#define USER_ROUNDS	100
+
+enum user_entry { BY_ERET, BY_CPS };
+
 /*
- * 9. DACR reads back as written: every write of the checks above, and a
+ * Run fn in USR mode, entered by an exception return or by CPS.  vec_svc
+ * reads the SVC that ends fn back; if it could not, fn ran from a page
+ * that DACR forbids (see start.S), and no check expects that.
+ */
+static u32 user_run(u32 fn, u32 arg, enum user_entry how)
+{
+	u32 r, unread = svc_unread;
+
+	clear_fault();
+	user_target = fn;
+	if (how == BY_CPS)
+		r = user_call_cps(fn, arg, UPROBE_GATE);
+	else
+		r = user_call(fn, arg);
+	user_target = 0;
+	if (svc_unread != unread)
+		bad("user call %x(%x): its SVC at PL0 was not readable at PL0",
+		    fn, arg);
+	return r;
+}
+
+/* A USR-mode call that must return 42. */
+static int user_call_ok(u32 fn, enum user_entry how)
+{
+	u32 r = user_run(fn, 0, how);
+
+	if (fault.kind != NO_FAULT) {
+		bad("user call %x (%s): aborted, kind %u FSR %x FAR %x", fn,
+		    how == BY_CPS ? "cps" : "eret", fault.kind, fault.fsr,
+		    fault.far);
+		return 0;
+	}
+	if (r != 42) {
+		bad("user call %x: returned %x, want 42", fn, r);
+		return 0;
+	}
+	return 1;
+}
+
+/* A USR-mode call that must take a prefetch abort with status fs on fn. */
+static int user_call_faults(u32 fn, enum user_entry how, u32 fs)
+{
+	u32 r = user_run(fn, 0, how);
+
+	if (fault.kind != PREFETCH_ABORT) {
+		bad("user call %x (%s): returned %x, kind %u, no prefetch abort",
+		    fn, how == BY_CPS ? "cps" : "eret", r, fault.kind);
+		return 0;
+	}
+	if (fs_of(fault.fsr) != fs || fault.far != fn || r == 42) {
+		bad("user call %x: IFSR %x IFAR %x r0 %x, want FS %x IFAR %x",
+		    fn, fault.fsr, fault.far, r, fs, fn);
+		return 0;
+	}
+	return 1;
+}
+
+/* A load at PL0 (the copy of uldr, in domain 0) that must return want. */
+static int user_load_ok(u32 addr, u32 want)
+{
+	u32 v = user_run(UPROBE_LDR, addr, BY_ERET);
+
+	if (fault.kind != NO_FAULT) {
+		bad("user load %x: aborted, kind %u FSR %x", addr, fault.kind,
+		    fault.fsr);
+		return 0;
+	}
+	if (v != want) {
+		bad("user load %x: read %x, want %x", addr, v, want);
+		return 0;
+	}
+	return 1;
+}
+
+/* A load at PL0 that must take a data abort with status fs. */
+static int user_load_faults(u32 addr, u32 fs)
+{
+	user_run(UPROBE_LDR, addr, BY_ERET);
+	return data_abort_was("user load", addr, fs, 0);
+}
+
+/* An LDRT at PL1 (PL0 permissions) that must return want. */
+static int ldrt_ok(u32 addr, u32 want)
+{
+	u32 v;
+
+	clear_fault();
+	v = probe_ldrt(addr);
+	if (fault.kind != NO_FAULT) {
+		bad("ldrt %x: aborted, FSR %x", addr, fault.fsr);
+		return 0;
+	}
+	if (v != want) {
+		bad("ldrt %x: read %x, want %x", addr, v, want);
+		return 0;
+	}
+	return 1;
+}
+
+/* An LDRT at PL1 that must take a data abort with status fs. */
+static int ldrt_faults(u32 addr, u32 fs)
+{
+	clear_fault();
+	probe_ldrt(addr);
+	return data_abort_was("ldrt", addr, fs, 0);
+}
+
+/* Revoke the user domain and do some PL1 work, as a kernel entry does. */
+static void revoke_and_work(u32 v)
+{
+	set_dacr(DACR3(D_CLIENT, D_CLIENT, D_NOACCESS));
+	store_ok(SECT_DATA + 0x80, v);
+	load_ok(SECT_DATA + 0x80, v);
+	call_ok(SECT_CODE + 0x40);
+}
+
+/*
+ * 9. A user function, hot in QEMU's jump cache (a thousand round trips
+ * through exception return and SVC), whose domain is revoked at PL1: the
+ * return to USR mode at that same code must take a prefetch abort (a
+ * section domain fault), for it and for a second hot function in another
+ * page; in odd rounds the PL1 code does more work first.
+ */
+static void check_user_fetch_revoke(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-fetch-revoke");
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UFN, BY_ERET);
+		for (u32 i = 0; i < 10; i++)
+			ok += user_call_ok(UFN2, BY_ERET);
+		if (r & 1)
+			revoke_and_work(r);
+		else
+			set_dacr(U_DACR(D_NOACCESS));
+		for (u32 i = 0; i < 3; i++)
+			faulted += user_call_faults(UFN, BY_ERET,
+						    FS_DOMAIN_SECT);
+		faulted += user_call_faults(UFN2, BY_ERET, FS_DOMAIN_SECT);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * (USER_CALLS + 10) || faulted != 4 * USER_ROUNDS)
+		bad("counted %u good user calls, %u prefetch aborts", ok,
+		    faulted);
+	report("%u rounds: %u user calls returned 42, %u after a revoke prefetch-aborted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 10. The same hot user function, its domain revoked and then granted
+ * again (client, or manager in odd rounds) before the return to USR
+ * mode, as Linux does around every kernel entry: it must run.
+ */
+static void check_user_fetch_restore(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-fetch-restore");
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UFN, BY_ERET);
+		set_dacr(U_DACR(D_NOACCESS));
+		if (r & 2)
+			faulted += ldrt_faults(UFN, FS_DOMAIN_SECT);
+		set_dacr(U_DACR(r & 1 ? D_MANAGER : D_CLIENT));
+		for (u32 i = 0; i < 3; i++)
+			ok += user_call_ok(UFN, BY_ERET);
+		ok += user_call_ok(UFN2, BY_ERET);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * (USER_CALLS + 4) || faulted != USER_ROUNDS / 2)
+		bad("counted %u good user calls, %u ldrt faults", ok, faulted);
+	report("%u rounds: %u user calls returned 42, also after revoke and grant",
+	       USER_ROUNDS, ok);
+}
+
+/*
+ * 11. Revoke, grant, revoke again (several writes at PL1, the last one a
+ * reduction again): the hot user function must take a prefetch abort.
+ */
+static void check_user_fetch_revoke_again(void)
+{
+	static const u32 seq[][4] = {
+		{ D_NOACCESS, D_CLIENT, D_NOACCESS, D_NOACCESS },
+		{ D_NOACCESS, D_MANAGER, D_CLIENT, D_NOACCESS },
+		{ D_MANAGER, D_NOACCESS, D_CLIENT, D_NOACCESS },
+		{ D_NOACCESS, D_CLIENT, D_NOACCESS, D_CLIENT },
+	};
+	u32 ok = 0, faulted = 0, want_ok = 0, want_faulted = 0;
+
+	begin("user-fetch-revoke-again");
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		const u32 *d3 = seq[r % ARRAY_SIZE(seq)];
+
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UFN, BY_ERET);
+		for (u32 k = 0; k < 4; k++)
+			set_dacr(U_DACR(d3[k]));
+		/* The last sequence ends granted: a control. */
+		if (d3[3] == D_NOACCESS) {
+			faulted += user_call_faults(UFN, BY_ERET,
+						    FS_DOMAIN_SECT);
+			want_faulted++;
+		} else {
+			ok += user_call_ok(UFN, BY_ERET);
+			want_ok++;
+		}
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * USER_CALLS + want_ok || faulted != want_faulted)
+		bad("counted %u good user calls, %u prefetch aborts", ok,
+		    faulted);
+	report("%u rounds: %u user calls returned 42, %u revoked again prefetch-aborted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 12. The return to USR mode is a CPS at PL1 and a branch (through the
+ * gate in domain 0), not an exception return: the hot user function
+ * (made hot through the gate or, in odd rounds, by exception returns)
+ * must take a prefetch abort after a revoke, and run after a grant.
+ */
+static void check_user_fetch_cps(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-fetch-cps");
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		enum user_entry hot = r & 1 ? BY_ERET : BY_CPS;
+
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UFN, hot);
+		set_dacr(U_DACR(D_NOACCESS));
+		for (u32 i = 0; i < 2; i++)
+			faulted += user_call_faults(UFN, BY_CPS,
+						    FS_DOMAIN_SECT);
+		set_dacr(U_DACR(D_CLIENT));
+		ok += user_call_ok(UFN, BY_CPS);
+		set_dacr(U_DACR(D_NOACCESS));
+		set_dacr(U_DACR(D_CLIENT));
+		set_dacr(U_DACR(D_NOACCESS));
+		faulted += user_call_faults(UFN, BY_CPS, FS_DOMAIN_SECT);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * (USER_CALLS + 1) || faulted != 3 * USER_ROUNDS)
+		bad("counted %u good user calls, %u prefetch aborts", ok,
+		    faulted);
+	report("%u rounds: %u user calls returned 42, %u revoked CPS ones prefetch-aborted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 13. Domain 1 (PL1 data and code, hot) is reduced too, in the same
+ * write as the user domain or in another one: the user function must
+ * abort exactly when its own domain 3 ends revoked, and domain-1 loads
+ * must fault.
+ *   round % 4 == 0: domain 1 only              user call runs
+ *   round % 4 == 1: domains 1 and 3 at once     user call aborts
+ *   round % 4 == 2: domain 3, then domain 1     user call aborts
+ *   round % 4 == 3: 3 revoked, granted, then 1  user call runs
+ */
+static void check_user_fetch_other_domain(void)
+{
+	const u32 d1data = SECT_DATA + 0x3000;
+	u32 ok = 0, faulted = 0, d1_faults = 0, want_ok = 0;
+
+	begin("user-fetch-other-domain");
+	set_dacr(U_DACR(D_CLIENT));
+	store_ok(d1data, 0x13131313);
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UFN, BY_ERET);
+		load_ok(d1data, 0x13131313);
+		call_ok(SECT_CODE + 0x40);
+		switch (r % 4) {
+		case 0:
+			set_dacr(DACR3(D_NOACCESS, D_CLIENT, D_CLIENT));
+			break;
+		case 1:
+			set_dacr(DACR3(D_NOACCESS, D_CLIENT, D_NOACCESS));
+			break;
+		case 2:
+			set_dacr(DACR3(D_CLIENT, D_CLIENT, D_NOACCESS));
+			set_dacr(DACR3(D_NOACCESS, D_CLIENT, D_NOACCESS));
+			break;
+		case 3:
+			set_dacr(DACR3(D_CLIENT, D_CLIENT, D_NOACCESS));
+			set_dacr(DACR3(D_CLIENT, D_CLIENT, D_CLIENT));
+			set_dacr(DACR3(D_NOACCESS, D_CLIENT, D_CLIENT));
+			break;
+		}
+		if (r % 4 == 0 || r % 4 == 3) {
+			ok += user_call_ok(UFN, BY_ERET);
+			want_ok++;
+		} else {
+			faulted += user_call_faults(UFN, BY_ERET,
+						    FS_DOMAIN_SECT);
+		}
+		d1_faults += load_faults(d1data, FS_DOMAIN_SECT);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * USER_CALLS + want_ok ||
+	    faulted != USER_ROUNDS - want_ok || d1_faults != USER_ROUNDS)
+		bad("counted %u good user calls, %u prefetch aborts, %u domain-1 load faults",
+		    ok, faulted, d1_faults);
+	report("%u rounds: %u user calls returned 42, %u aborted; %u domain-1 loads faulted",
+	       USER_ROUNDS, ok, faulted, d1_faults);
+}
+
+/*
+ * 14. SECT_UPRIV has no PL0 access by its AP bits: as manager (no
+ * permission checks) a user function there runs and a user load works,
+ * hot; as client (a reduction, not a revoke) the user call takes a
+ * section permission fault, and so do the user load and LDRT, while PL1
+ * loads and the user function of SECT_USER (same domain) still work.
+ */
+static void check_user_manager_client(void)
+{
+	const u32 rounds = 50;
+	u32 ok = 0, faulted = 0;
+
+	begin("user-manager-client");
+	for (u32 r = 0; r < rounds; r++) {
+		u32 v = 0x77000000 + r;
+
+		set_dacr(U_DACR(D_MANAGER));
+		store_ok(UPRIV_DATA, v);
+		for (u32 i = 0; i < USER_CALLS; i++)
+			ok += user_call_ok(UPRIV_FN, BY_ERET);
+		for (u32 i = 0; i < 100; i++)
+			ok += user_load_ok(UPRIV_DATA, v);
+		set_dacr(U_DACR(D_CLIENT));
+		faulted += user_call_faults(UPRIV_FN, r & 1 ? BY_CPS : BY_ERET,
+					    FS_PERM_SECT);
+		faulted += user_load_faults(UPRIV_DATA, FS_PERM_SECT);
+		faulted += ldrt_faults(UPRIV_DATA, FS_PERM_SECT);
+		ok += load_ok(UPRIV_DATA, v);
+		ok += user_call_ok(UFN, BY_ERET);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != rounds * (USER_CALLS + 102) || faulted != 3 * rounds)
+		bad("counted %u good calls and loads, %u permission faults",
+		    ok, faulted);
+	report("%u rounds: %u manager user calls/loads worked, %u client ones permission-faulted",
+	       rounds, ok, faulted);
+}
+
+/* Data words of SECT_USER, each in its own page (not UFN's or UFN2's). */
+#define USER_PAGES	4
+
+static u32 user_data(u32 i)
+{
+	return SECT_USER + 0x20000 + i * 0x11000 + 4 * i;
+}
+
+static u32 pl0_only_data(u32 i)
+{
+	return SECT_USER + 0x80000 + i * 0x3000 + 8 * i;
+}
+
+static u32 pl1_only_data(u32 i)
+{
+	return SECT_USER + 0xc0000 + i * 0x5000 + 12 * i;
+}
+
+/*
+ * 15. A user data page, loaded hot both at PL1 and at PL0 (so both
+ * translation regimes hold it): after a revoke at PL1, a PL1 load, an
+ * LDRT at PL1 and a PL0 load must each take a section domain fault,
+ * whichever comes first; after a grant all three read the data again.
+ */
+static void check_user_data_revoke(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-data-revoke");
+	set_dacr(U_DACR(D_CLIENT));
+	for (u32 i = 0; i < USER_PAGES; i++)
+		store_ok(user_data(i), 0x55000000 + i);
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 k = 0; k < 25; k++) {
+			for (u32 i = 0; i < USER_PAGES; i++) {
+				u32 v = 0x55000000 + r * 0x100 + i;
+
+				ok += load_ok(user_data(i), v);
+				ok += user_load_ok(user_data(i), v);
+			}
+		}
+		set_dacr(U_DACR(D_NOACCESS));
+		for (u32 i = 0; i < USER_PAGES; i++) {
+			u32 a = user_data(i);
+
+			/* Each kind of access comes first in some rounds. */
+			switch ((r + i) % 3) {
+			case 0:
+				faulted += load_faults(a, FS_DOMAIN_SECT);
+				faulted += ldrt_faults(a, FS_DOMAIN_SECT);
+				faulted += user_load_faults(a, FS_DOMAIN_SECT);
+				break;
+			case 1:
+				faulted += ldrt_faults(a, FS_DOMAIN_SECT);
+				faulted += user_load_faults(a, FS_DOMAIN_SECT);
+				faulted += load_faults(a, FS_DOMAIN_SECT);
+				break;
+			case 2:
+				faulted += user_load_faults(a, FS_DOMAIN_SECT);
+				faulted += load_faults(a, FS_DOMAIN_SECT);
+				faulted += ldrt_faults(a, FS_DOMAIN_SECT);
+				break;
+			}
+		}
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_PAGES; i++) {
+			u32 v = 0x55000000 + r * 0x100 + i;
+
+			ok += ldrt_ok(user_data(i), v);
+			ok += user_load_ok(user_data(i), v);
+			ok += load_ok(user_data(i), v);
+			store_ok(user_data(i), v + 0x100);
+		}
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * USER_PAGES * 53 ||
+	    faulted != USER_ROUNDS * USER_PAGES * 3)
+		bad("counted %u good loads, %u domain faults", ok, faulted);
+	report("%u rounds: %u PL1/LDRT/PL0 loads worked, %u after a revoke domain-faulted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 16. User data pages that PL1 never loads (written at PL1 once, then
+ * TLBIALL): their translations are hot at PL0 only, made by PL0 loads or
+ * (odd rounds) by LDRT.  After a revoke, an LDRT at PL1 must take a
+ * domain fault, with no PL1 access to them in between, and so must a PL0
+ * load; after a grant LDRT reads the data again.
+ */
+static void check_user_data_pl0_only(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-data-pl0-only");
+	set_dacr(U_DACR(D_CLIENT));
+	for (u32 i = 0; i < USER_PAGES; i++)
+		store_ok(pl0_only_data(i), 0x66000000 + i);
+	write_tlbiall(0);
+	dsb();
+	isb();
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 k = 0; k < 50; k++) {
+			for (u32 i = 0; i < USER_PAGES; i++) {
+				u32 a = pl0_only_data(i), v = 0x66000000 + i;
+
+				if (r & 1)
+					ok += ldrt_ok(a, v);
+				else
+					ok += user_load_ok(a, v);
+			}
+		}
+		set_dacr(U_DACR(D_NOACCESS));
+		for (u32 i = 0; i < USER_PAGES; i++)
+			faulted += ldrt_faults(pl0_only_data(i), FS_DOMAIN_SECT);
+		for (u32 i = 0; i < USER_PAGES; i++)
+			faulted += user_load_faults(pl0_only_data(i),
+						    FS_DOMAIN_SECT);
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 i = 0; i < USER_PAGES; i++)
+			ok += ldrt_ok(pl0_only_data(i), 0x66000000 + i);
+	}
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != USER_ROUNDS * USER_PAGES * 51 ||
+	    faulted != USER_ROUNDS * USER_PAGES * 2)
+		bad("counted %u good loads, %u domain faults", ok, faulted);
+	report("%u rounds: %u PL0/LDRT loads worked, %u revoked LDRT/PL0 ones domain-faulted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 17. The converse: user data pages loaded hot at PL1 only, never at PL0
+ * nor by LDRT while accessible.  After a revoke, a PL0 load (or, in odd
+ * rounds, an LDRT) comes first, then the other, then a PL1 load: all
+ * must take a domain fault; after a grant PL1 loads work again.
+ */
+static void check_user_data_pl1_only(void)
+{
+	u32 ok = 0, faulted = 0;
+
+	begin("user-data-pl1-only");
+	set_dacr(U_DACR(D_CLIENT));
+	for (u32 i = 0; i < USER_PAGES; i++)
+		store_ok(pl1_only_data(i), 0x99000000 + i);
+	for (u32 r = 0; r < USER_ROUNDS; r++) {
+		set_dacr(U_DACR(D_CLIENT));
+		for (u32 k = 0; k < 50; k++)
+			for (u32 i = 0; i < USER_PAGES; i++)
+				ok += load_ok(pl1_only_data(i), 0x99000000 + i);
+		set_dacr(U_DACR(D_NOACCESS));
+		for (u32 i = 0; i < USER_PAGES; i++) {
+			u32 a = pl1_only_data(i);
+
+			if (r & 1) {
+				faulted += ldrt_faults(a, FS_DOMAIN_SECT);
+				faulted += user_load_faults(a, FS_DOMAIN_SECT);
+			} else {
+				faulted += user_load_faults(a, FS_DOMAIN_SECT);
+				faulted += ldrt_faults(a, FS_DOMAIN_SECT);
+			}
+			faulted += load_faults(a, FS_DOMAIN_SECT);
+		}
+	}
+	set_dacr(U_DACR(D_CLIENT));
+	for (u32 i = 0; i < USER_PAGES; i++)
+		ok += load_ok(pl1_only_data(i), 0x99000000 + i);
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	if (ok != (USER_ROUNDS * 50 + 1) * USER_PAGES ||
+	    faulted != USER_ROUNDS * USER_PAGES * 3)
+		bad("counted %u good loads, %u domain faults", ok, faulted);
+	report("%u rounds: %u PL1 loads worked, %u PL0/LDRT/PL1 ones after a revoke domain-faulted",
+	       USER_ROUNDS, ok, faulted);
+}
+
+/*
+ * 18. DACR reads back as written: every write of the checks above, and a
  * few patterns (domain 0 kept client, no reserved 0b10 field).
  */
 static void check_readback(void)
@@ -781,16 +1377,43 @@ static void check_readback(void)
 
 /* --- Exceptions ----------------------------------------------------------- */
 
+static const char *mode_name(u32 mode)
+{
+	switch (mode) {
+	case 0x10: return "usr";
+	case 0x11: return "fiq";
+	case 0x12: return "irq";
+	case 0x13: return "svc";
+	case 0x16: return "mon";
+	case 0x17: return "abt";
+	case 0x1a: return "hyp";
+	case 0x1b: return "und";
+	case 0x1f: return "sys";
+	}
+	return "?";
+}
+
 /*
  * Called by the abort entries with frame = { r0, r1, r2, r3, r12, pc },
- * pc the aborted instruction.  Only the probes may abort.
+ * pc the aborted instruction, and SPSR_abt the mode it ran in.  Only the
+ * probes may abort: at PL1, or the copy of uldr and user_target in USR
+ * mode.  The read of the SVC number in vec_svc is let pass (see start.S).
  */
 void fault_entry(u32 kind, u32 *frame)
 {
-	u32 pc = frame[5];
+	const u32 uldr = UPROBE_LDR + (u32)(uldr_insn - uldr_start);
+	u32 pc = frame[5], spsr = read_spsr();
+	int from_usr = (spsr & MODE_MASK) == MODE_USR;
 
-	if (kind == DATA_ABORT && (pc == (u32)probe_ldr_insn ||
-				   pc == (u32)probe_str_insn)) {
+	if (kind == DATA_ABORT && !from_usr && pc == (u32)svc_read_insn) {
+		svc_unread++;
+		frame[4] = USER_SVC;	/* r12, the SVC number */
+		frame[5] = pc + 4;
+	} else if (kind == DATA_ABORT &&
+		   (from_usr ? pc == uldr :
+			       pc == (u32)probe_ldr_insn ||
+			       pc == (u32)probe_str_insn ||
+			       pc == (u32)probe_ldrt_insn)) {
 		fault.fsr = read_dfsr();
 		fault.far = read_dfar();
 		fault.kind = kind;
@@ -802,10 +1425,20 @@ void fault_entry(u32 kind, u32 *frame)
 		fault.kind = kind;
 		frame[0] = POISON;	/* the callee did not run */
 		frame[5] = (u32)probe_call_ret;
+	} else if (kind == PREFETCH_ABORT && from_usr && user_target &&
+		   pc == user_target) {
+		fault.fsr = read_ifsr();
+		fault.far = read_ifar();
+		fault.kind = kind;
+		frame[0] = POISON;
+		/* Back to the caller of user_call, in SVC mode. */
+		frame[5] = (u32)user_call_ret;
+		write_spsr((spsr & ~MODE_MASK) | MODE_SVC);
 	} else {
-		pr("unexpected %s abort at %x: DFSR %x DFAR %x IFSR %x IFAR %x",
-		   kind == DATA_ABORT ? "data" : "prefetch", pc, read_dfsr(),
-		   read_dfar(), read_ifsr(), read_ifar());
+		pr("unexpected %s abort at %x in %s mode: DFSR %x DFAR %x IFSR %x IFAR %x",
+		   kind == DATA_ABORT ? "data" : "prefetch", pc,
+		   mode_name(spsr & MODE_MASK), read_dfsr(), read_dfar(),
+		   read_ifsr(), read_ifar());
 		pr("stopped in check %s", check ? check : "(start)");
 		sys_exit(100);
 	}
@@ -840,6 +1473,13 @@ static void mmu_on(void)
 	ttb[SECT_XN >> 20] = SECT_XN | SD_SECTION | SD_NORMAL_WB | SD_PL1_RW |
 			     SD_XN | SD_DOMAIN(1);
 	ttb[SECT_PAGES >> 20] = (u32)l2_pages | L1_PAGE_TABLE | SD_DOMAIN(1);
+	/* The user-mode megabytes: PL0 may use them (but for SECT_UPRIV). */
+	ttb[SECT_USER >> 20] = SECT_USER | SD_SECTION | SD_NORMAL_WB |
+			       SD_PL0_RW | SD_DOMAIN(3);
+	ttb[SECT_UPROBE >> 20] = SECT_UPROBE | SD_SECTION | SD_NORMAL_WB |
+				 SD_PL0_RW | SD_DOMAIN(0);
+	ttb[SECT_UPRIV >> 20] = SECT_UPRIV | SD_SECTION | SD_NORMAL_WB |
+				SD_PL1_RW | SD_DOMAIN(3);
 	for (u32 i = 0; i < 256; i++)
 		l2_pages[i] = (SECT_PAGES + (i << 12)) | PD_SMALL |
 			      PD_NORMAL_WB | PD_PL1_RW;
@@ -855,26 +1495,28 @@ static void mmu_on(void)
 	isb();
 
 	sctlr = read_sctlr();
-	sctlr &= ~(SCTLR_A | SCTLR_V | SCTLR_TRE | SCTLR_AFE);
+	/* No WXN/UWXN: PL1 runs the CPS gate, which PL0 may write. */
+	sctlr &= ~(SCTLR_A | SCTLR_V | SCTLR_WXN | SCTLR_UWXN | SCTLR_TRE |
+		   SCTLR_AFE);
 	sctlr |= SCTLR_M | SCTLR_C | SCTLR_I | SCTLR_Z;
 	write_sctlr(sctlr);
 	isb();
 }
 
-static const char *mode_name(u32 mode)
+/*
+ * The user-mode code: the load probe and the CPS gate in domain 0, the
+ * functions in domain 3 (granted while they are copied); and a stack.
+ */
+static void user_setup(void)
 {
-	switch (mode) {
-	case 0x10: return "usr";
-	case 0x11: return "fiq";
-	case 0x12: return "irq";
-	case 0x13: return "svc";
-	case 0x16: return "mon";
-	case 0x17: return "abt";
-	case 0x1a: return "hyp";
-	case 0x1b: return "und";
-	case 0x1f: return "sys";
-	}
-	return "?";
+	put_code(UPROBE_LDR, uldr_start, uldr_end);
+	put_code(UPROBE_GATE, ugate_start, ugate_end);
+	set_dacr(U_DACR(D_CLIENT));
+	put_code(UFN, ufn42_start, ufn42_end);
+	put_code(UFN2, ufn42_start, ufn42_end);
+	put_code(UPRIV_FN, ufn42_start, ufn42_end);
+	set_dacr(DACR(D_CLIENT, D_CLIENT));
+	set_user_sp(USER_STACK_TOP);
 }
 
 void main(void)
@@ -891,9 +1533,12 @@ void main(void)
 	}
 	mmu_on();
 	put_fn42(fn);
+	user_setup();
 	pr("MMU on; domain 1: data %x, read-only %x, code %x, XN %x, pages %x",
 	   SECT_DATA, SECT_RO, SECT_CODE, SECT_XN, SECT_PAGES);
-	pr("domain 2: data %x; domain 0: this program", SECT_OTHER);
+	pr("domain 2: data %x; domain 3: user %x, PL1-only %x", SECT_OTHER,
+	   SECT_USER, SECT_UPRIV);
+	pr("domain 0: this program, user probes %x", SECT_UPROBE);
 
 	check_load_domain();
 	check_store_manager_client();
@@ -903,6 +1548,15 @@ void main(void)
 	check_data_then_fetch();
 	check_other_domain(fn);
 	check_page_domain();
+	check_user_fetch_revoke();
+	check_user_fetch_restore();
+	check_user_fetch_revoke_again();
+	check_user_fetch_cps();
+	check_user_fetch_other_domain();
+	check_user_manager_client();
+	check_user_data_revoke();
+	check_user_data_pl0_only();
+	check_user_data_pl1_only();
 	check_readback();
 
 	pr("%u checks, %u failed, %u faults taken", checks_run, checks_failed,

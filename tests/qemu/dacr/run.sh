@@ -14,7 +14,12 @@
 # 4 KB pages in domains 1 and 2 and, over many rounds, changes DACR between
 # loads, stores and calls (a thousand calls at a time, so that the called
 # code is hot in the jump cache); its abort handlers record DFSR/DFAR and
-# IFSR/IFAR and resume.  Checks:
+# IFSR/IFAR and resume.  It also runs code in user mode (PL0), in domain 3,
+# as Linux does: entered by an exception return (or a CPS), back to PL1 by
+# an SVC, with DACR changed at PL1 in between; a QEMU that keeps PL0 code
+# in its jump cache, or flushes its TLB only for some MMU indexes, across
+# such a write must still fault every access the new value forbids.
+# 18 checks:
 #   load-domain           client and manager loads work, noaccess loads take
 #                         a section domain fault at the address
 #   store-manager-client  manager stores work on PL1 read-only data, client
@@ -30,6 +35,24 @@
 #                         running and faults domain-2 loads; a later domain-1
 #                         reduction still stops the code
 #   page-domain           the same for 4 KB pages (second-level table)
+#   user-fetch-revoke     a hot user function whose domain PL1 revokes
+#                         takes a prefetch abort on the return to user mode
+#   user-fetch-restore    revoked, then granted again before the return: it
+#                         runs (what Linux does on every kernel entry)
+#   user-fetch-revoke-again  revoked, granted, revoked again: it aborts
+#   user-fetch-cps        the same when user mode is entered by CPS and a
+#                         branch instead of an exception return
+#   user-fetch-other-domain  domain 1 reduced too, in the same DACR write or
+#                         another: the user function aborts exactly when its
+#                         own domain ends revoked
+#   user-manager-client   manager to client on a PL1-only (by AP) section:
+#                         hot user fetches and loads take permission faults
+#   user-data-revoke      data hot at PL1 and PL0: after a revoke a PL1 load,
+#                         an LDRT and a PL0 load each take a domain fault
+#   user-data-pl0-only    data hot at PL0 only: after a revoke an LDRT at PL1
+#                         (no PL1 load between) takes a domain fault
+#   user-data-pl1-only    data hot at PL1 only: after a revoke a PL0 load
+#                         and an LDRT take a domain fault
 #   readback              DACR reads back as written
 #
 # The program runs twice, on two vexpress-a15 CPUs:
@@ -57,7 +80,10 @@ out=${2:-${O:-}}
 here=$(cd "$(dirname "$0")" && pwd)
 cc=${CROSS_COMPILE:-arm-linux-gnueabihf-}gcc
 checks=(load-domain store-manager-client fetch-manager-client same-value
-	fetch-hot data-then-fetch other-domain page-domain readback)
+	fetch-hot data-then-fetch other-domain page-domain
+	user-fetch-revoke user-fetch-restore user-fetch-revoke-again
+	user-fetch-cps user-fetch-other-domain user-manager-client
+	user-data-revoke user-data-pl0-only user-data-pl1-only readback)
 configs=("no-el2-el3 vexpress-a15,secure=off,virtualization=off"
 	"el2-el3 vexpress-a15")
 
