@@ -529,11 +529,12 @@ BINFMT_ARMHF=':prukit-armhf:M::\x7f\x45\x4c\x46\x01\x01\x01\x00\x00\x00\x00\x00\
 
 # stage2_host ROOT LOG - debootstrap's second stage in a chroot here, its
 # armhf programs run by qemu-user (Debian's qemu-user-static) through
-# binfmt_misc: about 2.5 minutes, against 7 in the VM.  Returns 2, having
-# changed nothing, where it cannot: not root, binfmt_misc not mountable,
-# or PRUKIT_DEB_STAGE2=vm.  An entry it registered is removed afterwards
-# (binfmt_misc is the kernel's, not this container's); one left by a
-# killed run names only qemu-user-static's interpreter.
+# binfmt_misc: about 2.5 minutes, against 7 in the VM.  Returns 2, before
+# it touches ROOT, where it cannot run: not root, binfmt_misc neither
+# mounted nor mountable, no entry registrable, or PRUKIT_DEB_STAGE2=vm.
+# An entry it registered is removed afterwards (binfmt_misc is the
+# kernel's, not this container's); one left by a killed run names only
+# qemu-user-static's interpreter.
 stage2_host() {
 	local root=$1 log=$2 reg='' rc=0
 	[ "${PRUKIT_DEB_STAGE2:-}" != vm ] && [ "$(id -u)" -eq 0 ] || return 2
@@ -545,7 +546,7 @@ stage2_host() {
 		[ ! -e "$BINFMT_MISC/prukit-armhf" ] || echo -1 >"$BINFMT_MISC/prukit-armhf"
 		printf '%s\n' "$BINFMT_ARMHF" >"$BINFMT_MISC/register" 2>/dev/null || return 2
 		reg=$BINFMT_MISC/prukit-armhf
-		chroot "$root" /bin/true || rc=1
+		chroot "$root" /bin/true >"$log" 2>&1 || rc=1
 	fi
 	if [ $rc -eq 0 ]; then
 		msg "second stage here, armhf under qemu-user (once)"
