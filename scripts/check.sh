@@ -72,7 +72,7 @@ step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
 # own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU
 # drivers (Documentation/kernels.rst)
 step kernels 31 scripts/kernels.sh 5.10 6.1 6.12 5.10-ti 6.12-ti	# [33]
-step qemu 20 qemu_check					# [21]
+step qemu 36 qemu_check					# [39]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti
