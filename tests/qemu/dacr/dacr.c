@@ -386,30 +386,43 @@ static int data_abort_was(const char *what, u32 addr, u32 fs, u32 wnr)
 	return 1;
 }
 
-/* A load that must work and return want. */
-static int load_ok(u32 addr, u32 want)
+/* A read by probe (a load of some kind) that must work and return want. */
+static int read_ok(const char *what, u32 (*probe)(u32), u32 addr, u32 want)
 {
 	u32 v;
 
 	clear_fault();
-	v = probe_ldr(addr);
+	v = probe(addr);
 	if (fault.kind != NO_FAULT) {
-		bad("load %x: aborted, FSR %x", addr, fault.fsr);
+		bad("%s %x: aborted, kind %u FSR %x", what, addr, fault.kind,
+		    fault.fsr);
 		return 0;
 	}
 	if (v != want) {
-		bad("load %x: read %x, want %x", addr, v, want);
+		bad("%s %x: read %x, want %x", what, addr, v, want);
 		return 0;
 	}
 	return 1;
 }
 
+/* A read by probe that must take a data abort with status fs. */
+static int read_faults(const char *what, u32 (*probe)(u32), u32 addr, u32 fs)
+{
+	clear_fault();
+	probe(addr);
+	return data_abort_was(what, addr, fs, 0);
+}
+
+/* A load that must work and return want. */
+static int load_ok(u32 addr, u32 want)
+{
+	return read_ok("load", probe_ldr, addr, want);
+}
+
 /* A load that must take a data abort with status fs. */
 static int load_faults(u32 addr, u32 fs)
 {
-	clear_fault();
-	probe_ldr(addr);
-	return data_abort_was("load", addr, fs, 0);
+	return read_faults("load", probe_ldr, addr, fs);
 }
 
 /* A store that must work (and be read back). */
@@ -882,54 +895,34 @@ static int user_call_faults(u32 fn, enum user_entry how, u32 fs)
 	return 1;
 }
 
-/* A load at PL0 (the copy of uldr, in domain 0) that must return want. */
+/* A load at PL0: the copy of uldr, in domain 0, run in USR mode. */
+static u32 user_ldr(u32 addr)
+{
+	return user_run(UPROBE_LDR, addr, BY_ERET);
+}
+
+/* A load at PL0 that must return want. */
 static int user_load_ok(u32 addr, u32 want)
 {
-	u32 v = user_run(UPROBE_LDR, addr, BY_ERET);
-
-	if (fault.kind != NO_FAULT) {
-		bad("user load %x: aborted, kind %u FSR %x", addr, fault.kind,
-		    fault.fsr);
-		return 0;
-	}
-	if (v != want) {
-		bad("user load %x: read %x, want %x", addr, v, want);
-		return 0;
-	}
-	return 1;
+	return read_ok("user load", user_ldr, addr, want);
 }
 
 /* A load at PL0 that must take a data abort with status fs. */
 static int user_load_faults(u32 addr, u32 fs)
 {
-	user_run(UPROBE_LDR, addr, BY_ERET);
-	return data_abort_was("user load", addr, fs, 0);
+	return read_faults("user load", user_ldr, addr, fs);
 }
 
 /* An LDRT at PL1 (PL0 permissions) that must return want. */
 static int ldrt_ok(u32 addr, u32 want)
 {
-	u32 v;
-
-	clear_fault();
-	v = probe_ldrt(addr);
-	if (fault.kind != NO_FAULT) {
-		bad("ldrt %x: aborted, FSR %x", addr, fault.fsr);
-		return 0;
-	}
-	if (v != want) {
-		bad("ldrt %x: read %x, want %x", addr, v, want);
-		return 0;
-	}
-	return 1;
+	return read_ok("ldrt", probe_ldrt, addr, want);
 }
 
 /* An LDRT at PL1 that must take a data abort with status fs. */
 static int ldrt_faults(u32 addr, u32 fs)
 {
-	clear_fault();
-	probe_ldrt(addr);
-	return data_abort_was("ldrt", addr, fs, 0);
+	return read_faults("ldrt", probe_ldrt, addr, fs);
 }
 
 /* Revoke the user domain and do some PL1 work, as a kernel entry does. */
