@@ -580,40 +580,33 @@ deb_root() {
 			--include="$DEB_ROOT_PKGS" bookworm "$tmp/root" "$(debian_mirror)"
 		t0=$(date +%s)
 		stage2_host "$tmp/root" "$tmp/second.log" || rc=$?
-		if [ "$rc" -eq 0 ]; then
-			truncate -s "$DEB_ROOT_SIZE" "$tmp/root.img"
-			mkfs.ext4 -q -F -L prukit-root -d "$tmp/root" "$tmp/root.img" ||
-				die "mkfs.ext4 -d $tmp/root failed"
-			mv "$tmp/root.img" "$img"
-			rm -rf "$tmp"
-			msg "package test root: $img (second stage $(( $(date +%s) - t0 )) s here)"
-			echo "$img"
-			return 0
-		elif [ "$rc" -ne 2 ]; then
+		if [ "$rc" -ne 0 ] && [ "$rc" -ne 2 ]; then
 			tail -n 20 "$tmp/second.log" >&2 || true
 			die "debootstrap's second stage failed under qemu-user; see $tmp/second.log"
 		fi
-		rc=0
-		msg "no chroot with qemu-user here (root and binfmt_misc needed): the second stage runs in the VM"
 		truncate -s "$DEB_ROOT_SIZE" "$tmp/root.img"
 		mkfs.ext4 -q -F -L prukit-root -d "$tmp/root" "$tmp/root.img" ||
 			die "mkfs.ext4 -d $tmp/root failed"
 		rm -rf "$tmp/root"
-		dir=$PRUKIT_TOP/out/vm/$tag/stage2
-		rm -rf "$dir"
-		mkdir -p "$dir"
-		make_dtb "$dir/dtb"
-		make_initrd "$dir" stage2 ""
-		msg "second stage in the VM ($kver; several minutes, once)"
-		VM_ROOTDISK=$tmp/root.img VM_ROOTDISK_SNAPSHOT=off boot "$dir" "" "$dir/out" >&2 || rc=$?
-		if [ "$rc" -ne 0 ]; then
-			tail -n 20 "$dir/out/stage2.log" >&2 || true
-			rm -rf "$tmp"
-			die "debootstrap's second stage failed in the VM (exit $rc); see $dir/console.log"
+		if [ "$rc" -eq 2 ]; then
+			rc=0
+			msg "no chroot with qemu-user here (root and binfmt_misc needed): the second stage runs in the VM"
+			dir=$PRUKIT_TOP/out/vm/$tag/stage2
+			rm -rf "$dir"
+			mkdir -p "$dir"
+			make_dtb "$dir/dtb"
+			make_initrd "$dir" stage2 ""
+			msg "second stage in the VM ($kver; several minutes, once)"
+			VM_ROOTDISK=$tmp/root.img VM_ROOTDISK_SNAPSHOT=off boot "$dir" "" "$dir/out" >&2 || rc=$?
+			if [ "$rc" -ne 0 ]; then
+				tail -n 20 "$dir/out/stage2.log" >&2 || true
+				rm -rf "$tmp"
+				die "debootstrap's second stage failed in the VM (exit $rc); see $dir/console.log"
+			fi
 		fi
 		mv "$tmp/root.img" "$img"
 		rm -rf "$tmp"
-		msg "package test root: $img ($(cat "$dir/seconds") s in the VM)"
+		msg "package test root: $img (second stage $(( $(date +%s) - t0 )) s)"
 	fi
 	echo "$img"
 }
