@@ -173,8 +173,10 @@ build_prukit() {
 	tag=$(kernel_tag "$series" "$kver")
 	"$PRUKIT_TOP/scripts/kernels.sh" --build-only --board "$series" >/dev/null ||
 		die "building prukit for $series ($kver) failed (see out/kernels/$tag*/build.log)"
-	make -s -C "$PRUKIT_TOP" firmware >/dev/null
+	make -s -C "$PRUKIT_TOP" firmware >/dev/null || die "make firmware failed"
 	make -s -C "$PRUKIT_TOP" overlays >/dev/null || die "make overlays failed"
+	# the tests' host halves decode the guest's pin traces with it
+	make -s -C "$PRUKIT_TOP" tools >/dev/null || die "make tools (out/tools/prusim) failed"
 	qemu_binary
 }
 
