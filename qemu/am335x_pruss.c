@@ -10,35 +10,42 @@
  * own pruss, pruss_intc and pru_rproc drivers run against it as on a board:
  *
  *   0x4a300000  PRU-ICSS (512 KiB): prusim_host_read()/prusim_host_write()
+ *               (this file, TYPE_AM335X_PRUSS)
  *   0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000
- *               GPIO banks 0..3 (gpio-omap): OE and the data registers are
- *               the simulator's, the rest is stored here
- *   0x44e00c00  PRCM's PRM_PER: RM_PER_RSTCTRL's PRU_ICSS_LRST holds the
- *               PRU-ICSS in reset (asserted at power-on; ti-sysc releases
- *               it, and asserts it whenever the PRU-ICSS's module idles)
- *   0x44e00000  PRCM's CM_PER and CM_WKUP: the GPIO banks' CLKCTRL registers
- *               (disabled at power-on; ti-sysc enables a bank's while its
- *               module is in use, and a gated bank takes no access)
- *   0x44e10800  control module pad registers (pinctrl-single): a PRU output
- *               or a GPIO output reaches the pin trace only through a pad
- *               in its mode, an input R31 or DATAIN only through one that
- *               also has its receiver on
- *   0x5f000000  prukit's test port: pin trace, input stimulus, statistics
- *               and timing knobs, for tests inside the guest (registers:
- *               sim/prusim_port.h; a guest driver, prukit's
- *               tests/kmod/prusim_port.c, shows them in debugfs)
+ *               GPIO banks 0..3 (gpio-omap; TYPE_AM335X_GPIO): OE and the
+ *               data registers are the simulator's, the rest is the bank's
+ *   0x44e00c00  PRCM's PRM_PER (TYPE_AM335X_PRCM): RM_PER_RSTCTRL's
+ *               PRU_ICSS_LRST holds the PRU-ICSS in reset (asserted at
+ *               power-on; ti-sysc releases it, and asserts it whenever the
+ *               PRU-ICSS's module idles)
+ *   0x44e00000  PRCM's CM_PER and CM_WKUP (TYPE_AM335X_PRCM): the GPIO
+ *               banks' CLKCTRL registers (disabled at power-on; ti-sysc
+ *               enables a bank's while its module is in use, and a gated
+ *               bank takes no access)
+ *   0x44e10800  control module pad registers (pinctrl-single;
+ *               TYPE_AM335X_PADS): a PRU output or a GPIO output reaches
+ *               the pin trace only through a pad in its mode, an input R31
+ *               or DATAIN only through one that also has its receiver on
+ *   0x5f000000  prukit's test port (TYPE_AM335X_PRUSS_PORT): pin trace,
+ *               input stimulus, statistics and timing knobs, for tests
+ *               inside the guest (registers: sim/prusim_port.h; a guest
+ *               driver, prukit's tests/kmod/prusim_port.c, shows them in
+ *               debugfs)
  *
- * This file has the PRU-ICSS, its reset, its interrupts, the simulation
- * thread and the device; am335x_pruss_pins.c the pins, GPIO banks (and
- * their clocks) and pads; am335x_pruss_port.c the test port;
- * am335x_pruss_internal.h what they share.
+ * Each block is a device of its own (am335x_pruss_internal.h lists them and
+ * their files); this file has the PRU-ICSS (TYPE_AM335X_PRUSS): its reset,
+ * its interrupts and the simulation, and am335x_pruss_create(), which makes
+ * the blocks, links them and maps them.
  *
- * Accesses to the rest of L4_WKUP, L4_PER and L4_FAST, and to registers of
- * the blocks above that are not modelled, are logged (-d unimp) and counted
- * in the test port's "stats": a test that makes one fails.
+ * Accesses to registers of the blocks above that are not modelled are
+ * logged (-d unimp, "am335x-pruss: ...") and counted in the test port's
+ * "stats": a test that makes one fails.  The rest of L4_WKUP, L4_PER and
+ * L4_FAST are QEMU's unimplemented devices ("am335x.l4_per: unimplemented
+ * device ..." in the same log): prukit's VM harness fails the boot that
+ * logs one.
  *
- * Outputs: interrupts host_intr0..7 (INTC host interrupts 2..9) and one per
- * GPIO bank (never raised: GPIO interrupts are not modelled).
+ * Outputs: interrupts host_intr0..7 (INTC host interrupts 2..9).  Input:
+ * "lrst", PRCM's PRU_ICSS_LRST (asserted: the PRU-ICSS is held in reset).
  *
  * The simulation runs in a thread of its own, or, with QEMU's -icount, in
  * lockstep with the guest's virtual clock on the vCPUs' thread (see
@@ -49,7 +56,9 @@
  * and takes the BQL, then the device lock, to change interrupt lines.
  * The thread parks while the VM is stopped.
  *
- * Register values are handled as host integers: little-endian hosts only.
+ * Register values cross the bus as little-endian bytes (ldl_le_p() and
+ * stl_le_p()); the simulator keeps its memories and registers in host
+ * order, and assumes a little-endian host.
  *
  * Emulation policy (not a property of the board): while a host interrupt
  * towards the ARM is pending (until the ARM's handler has taken its event:
@@ -63,6 +72,7 @@
 
 #include "qemu/osdep.h"
 #include "qemu/atomic.h"
+#include "qemu/bswap.h"
 #include "qemu/cutils.h"
 #include "qemu/log.h"
 #include "qemu/main-loop.h"
@@ -74,6 +84,7 @@
 #include "exec/address-spaces.h"
 #include "exec/memory.h"
 #include "hw/irq.h"
+#include "hw/misc/unimp.h"
 #include "hw/qdev-properties.h"
 #include "hw/sysbus.h"
 #include "migration/vmstate.h"
@@ -90,23 +101,22 @@
 #include "am335x_pruss_internal.h"
 
 QEMU_BUILD_BUG_MSG(HOST_BIG_ENDIAN,
-                   "am335x-pruss supports little-endian hosts only");
+                   "prukit's simulator supports little-endian hosts only");
 
 static const hwaddr gpio_base[PRUSIM_GPIO_BANKS] = {
     0x44e07000, 0x4804c000, 0x481ac000, 0x481ae000,
 };
 
-/* Unmodelled rest of the L4 interconnects, at a lower priority */
+/* The unmodelled rest of the L4 interconnects: unimplemented devices */
 static const struct {
     hwaddr base;
     hwaddr size;
     const char *name;
 } catch_regions[] = {
-    { 0x44c00000, 0x00400000, "L4_WKUP" },
-    { 0x48000000, 0x01000000, "L4_PER" },
-    { 0x4a000000, 0x01000000, "L4_FAST" },
+    { 0x44c00000, 0x00400000, "am335x.l4_wkup" },
+    { 0x48000000, 0x01000000, "am335x.l4_per" },
+    { 0x4a000000, 0x01000000, "am335x.l4_fast" },
 };
-QEMU_BUILD_BUG_ON(ARRAY_SIZE(catch_regions) != NUM_CATCH);
 
 /* ------------------------------------------------------------------ */
 /* Unmodelled accesses                                                 */
@@ -128,10 +138,7 @@ void G_GNUC_PRINTF(2, 3) pruss_unimp(AM335xPrussState *p, const char *fmt,
 
 uint32_t pruss_iep_count(AM335xPrussState *p)
 {
-    uint32_t v = 0;
-
-    prusim_host_read(p->s, ICSS_IEP_COUNT, &v, sizeof(v));
-    return v;
+    return pruss_icss_read32(p, ICSS_IEP_COUNT);
 }
 
 /* A core started: the origin of traces and of stimuli waiting for it. */
@@ -366,10 +373,10 @@ static const struct prusim_ops pruss_sim_ops = {
 
 uint32_t pruss_icss_read32(AM335xPrussState *p, uint32_t off)
 {
-    uint32_t v = 0;
+    uint8_t b[4] = { 0 };
 
-    prusim_host_read(p->s, off, &v, sizeof(v));
-    return v;
+    prusim_host_read(p->s, off, b, sizeof(b));
+    return ldl_le_p(b);
 }
 
 /* Events routed to a host interrupt towards the ARM that is enabled */
@@ -593,6 +600,7 @@ void pruss_unlock(AM335xPrussState *p, bool kick)
 static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
 {
     AM335xPrussState *p = opaque;
+    uint8_t b[4] = { 0 };
     uint32_t v = 0;
 
     pruss_lock(p);
@@ -607,7 +615,9 @@ static uint64_t pruss_read(void *opaque, hwaddr addr, unsigned int size)
         pruss_unimp(p, "PRU-ICSS read of %u bytes at 0x%05" HWADDR_PRIx,
                     size, addr);
     }
-    prusim_host_read(p->s, addr, &v, size);
+    /* the bus's bytes, low first: a narrower read leaves the rest 0 */
+    prusim_host_read(p->s, addr, b, size);
+    v = ldl_le_p(b);
     /* the ARM's interrupt handler takes the event HIPIR names */
     if (addr >= ICSS_INTC_HIPIR(FIRST_ARM_HOST) &&
         addr < ICSS_INTC_HIPIR(PRUSIM_NUM_HOSTS) &&
@@ -625,8 +635,11 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
 {
     AM335xPrussState *p = opaque;
     uint32_t v = val;
+    uint8_t b[4];
     bool was_running[PRUSIM_NUM_CORES];
     unsigned int i;
+
+    stl_le_p(b, val);               /* the first @size bytes are the bus's */
 
     trace_am335x_pruss_write(addr, size, v);
     pruss_lock(p);
@@ -641,7 +654,7 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
         pruss_unimp(p,
                     "PRU-ICSS write of %u bytes at 0x%05" HWADDR_PRIx " (0x%x)",
                     size, addr, v);
-    } else if (!prusim_store_modelled(addr, &v, size)) {
+    } else if (!prusim_store_modelled(addr, b, size)) {
         pruss_unimp(p, "PRU-ICSS write of 0x%x (%u bytes) at 0x%05" HWADDR_PRIx
                     ": a setting not modelled", v, size, addr);
     }
@@ -659,7 +672,7 @@ static void pruss_write(void *opaque, hwaddr addr, uint64_t val,
         /* a core's CONTROL: even the knob's stores land before it stops */
         flight_land(p);
     }
-    prusim_host_write(p->s, addr, &v, size);
+    prusim_host_write(p->s, addr, b, size);
     for (i = 0; i < PRUSIM_NUM_CORES; i++) {
         struct prusim_status st;
 
@@ -683,7 +696,7 @@ static const MemoryRegionOps pruss_ops = {
 };
 
 /* ------------------------------------------------------------------ */
-/* PRCM: the PRU-ICSS's local reset                                    */
+/* The local reset (PRCM's PRU_ICSS_LRST)                              */
 
 /*
  * PRU_ICSS_LRST asserted: the PRU-ICSS goes to its reset state, its R30
@@ -714,83 +727,18 @@ static void icss_reset(AM335xPrussState *p)
     pruss_update_irqs(p);
 }
 
-static uint64_t prm_read(void *opaque, hwaddr off, unsigned int size)
+/* "lrst": PRCM's PRU_ICSS_LRST; asserting it resets the PRU-ICSS */
+static void pruss_lrst(void *opaque, int n, int level)
 {
     AM335xPrussState *p = opaque;
-    uint32_t v = 0;
 
     pruss_lock(p);
-    if (off == PRM_RSTCTRL && size == 4) {
-        v = p->prm_rstctrl;
-    } else {
-        pruss_unimp(p, "PRM_PER read of %u bytes at 0x%02" HWADDR_PRIx
-                    " (not modelled)", size, off);
+    if (level && !p->in_lrst) {
+        icss_reset(p);
     }
-    pruss_unlock(p, false);
-    return v;
-}
-
-static void prm_write(void *opaque, hwaddr off, uint64_t val,
-                      unsigned int size)
-{
-    AM335xPrussState *p = opaque;
-    uint32_t v = val;
-
-    pruss_lock(p);
-    if (off != PRM_RSTCTRL || size != 4 || (v & ~PRM_ICSS_LRST)) {
-        pruss_unimp(p, "PRM_PER write of %u bytes at 0x%02" HWADDR_PRIx
-                    " (0x%x, not modelled)", size, off, v);
-    } else {
-        if (v & ~p->prm_rstctrl & PRM_ICSS_LRST) {
-            icss_reset(p);
-        }
-        p->prm_rstctrl = v;
-    }
+    p->in_lrst = level;
     pruss_unlock(p, true);
 }
-
-static const MemoryRegionOps prm_ops = {
-    .read = prm_read,
-    .write = prm_write,
-    .endianness = DEVICE_LITTLE_ENDIAN,
-    .valid = { .min_access_size = 1, .max_access_size = 4 },
-    .impl = { .min_access_size = 1, .max_access_size = 4 },
-};
-
-/* ------------------------------------------------------------------ */
-/* The rest of the L4 interconnects: not modelled                      */
-
-static uint64_t catch_read(void *opaque, hwaddr off, unsigned int size)
-{
-    MemoryRegion *mr = opaque;
-    AM335xPrussState *p = AM335X_PRUSS(mr->owner);
-
-    pruss_lock(p);
-    pruss_unimp(p, "read of %u bytes at 0x%08" HWADDR_PRIx " (not modelled)",
-                size, mr->addr + off);
-    pruss_unlock(p, false);
-    return 0;
-}
-
-static void catch_write(void *opaque, hwaddr off, uint64_t val,
-                        unsigned int size)
-{
-    MemoryRegion *mr = opaque;
-    AM335xPrussState *p = AM335X_PRUSS(mr->owner);
-
-    pruss_lock(p);
-    pruss_unimp(p, "write of %u bytes at 0x%08" HWADDR_PRIx
-                " (0x%" PRIx64 ", not modelled)",
-                size, mr->addr + off, val);
-    pruss_unlock(p, false);
-}
-
-static const MemoryRegionOps catch_ops = {
-    .read = catch_read,
-    .write = catch_write,
-    .endianness = DEVICE_LITTLE_ENDIAN,
-    .valid = { .min_access_size = 1, .max_access_size = 8 },
-};
 
 /* ------------------------------------------------------------------ */
 /* The simulation thread                                               */
@@ -1099,31 +1047,14 @@ static void pruss_reset_state(AM335xPrussState *p)
     cfg.ocp_write_delay = p->ocp_write_delay;
     p->event_latency = cfg.event_latency;
     prusim_init(p->s, &cfg, &pruss_sim_ops, p);
-    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
-        /* the AM335x's reset value: every line an input */
-        prusim_gpio_write(p->s, i, PRUSIM_GPIO_OE, 0xffffffff);
-        memset(p->gpio_reg[i], 0, sizeof(p->gpio_reg[i]));
-    }
-    for (i = 0; i < PADS_NUM; i++) {
-        p->pad[i] = PAD_RESET;
-    }
-    pruss_pads_masks(p);
     p->landing = false;
     if (p->lockstep) {
         /* simulated time starts again from the guest's now */
         lockstep_rebase(p, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL));
     }
-    memset(p->gpio_out, 0, sizeof(p->gpio_out));
-    memset(p->gpio_shown, 0, sizeof(p->gpio_shown));
-    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
-        p->gpio_oe[i] = 0xffffffff;
-    }
     for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
         pruss_stim_free(&p->input[i].stim);
         memset(&p->input[i], 0, sizeof(p->input[i]));
-    }
-    for (i = 0; i < PORT_HANDLES; i++) {
-        pruss_stage_free(&p->stage[i]);
     }
     p->trace_head = p->trace_count = 0;
     p->trace_dropped = p->trace_origin = p->trace_until = 0;
@@ -1146,20 +1077,21 @@ static void pruss_reset_state(AM335xPrussState *p)
     pruss_jitter_seed(p);
     p->hold_mode = p->hold_mode_reset;
     /* as on a board: held in reset until Linux releases it (ti-sysc) */
-    p->prm_rstctrl = PRM_ICSS_LRST;
+    p->in_lrst = true;
     p->icss_resets = 0;
-    /* the TRM's reset values: every bank's clocks disabled */
-    memset(p->gpio_clkctrl, 0, sizeof(p->gpio_clkctrl));
-    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
-        prusim_gpio_set_gated(p->s, i, true);
-    }
-    p->gpio_clock_gatings = 0;
     memset(p->reset_states, PRUSIM_DISABLED, sizeof(p->reset_states));
     p->runnable = false;
     p->irq_dirty = true;
 }
 
-/* Resettable: the state in the enter phase, the interrupt lines in hold */
+/*
+ * Resettable: the simulator and this device's state in the enter phase,
+ * the interrupt lines in the hold phase.  The other blocks reset their
+ * registers in their enter phases, and in their hold phases (after the
+ * simulator's reset) what they put into it: a GPIO bank its OE and its
+ * clock, the pads what reaches a pin; PRCM drives "lrst" and the banks'
+ * clocks.
+ */
 static void am335x_pruss_reset_enter(Object *obj, ResetType type)
 {
     AM335xPrussState *p = AM335X_PRUSS(obj);
@@ -1182,7 +1114,6 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
 {
     AM335xPrussState *p = AM335X_PRUSS(dev);
     SysBusDevice *sbd = SYS_BUS_DEVICE(dev);
-    Error *err = NULL;
     unsigned int i;
 
     if (!p->slice_cycles) {
@@ -1203,51 +1134,24 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
                    OCP_WRITE_DELAY_MAX);
         return;
     }
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        if (!p->gpio[i]) {
+            error_setg(errp, "link gpio%u is not set", i);
+            return;
+        }
+    }
+    if (!p->pads) {
+        error_setg(errp, "link pads is not set");
+        return;
+    }
 
     memory_region_init_io(&p->pruss_mr, OBJECT(p), &pruss_ops, p,
                           "am335x-pruss.icss", PRUSS_SIZE);
     sysbus_init_mmio(sbd, &p->pruss_mr);
-    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
-        g_autofree char *name = g_strdup_printf("am335x-pruss.gpio%u", i);
-
-        memory_region_init_io(&p->gpio_mr[i], OBJECT(p), &pruss_gpio_ops[i], p,
-                              name, GPIO_SIZE);
-        sysbus_init_mmio(sbd, &p->gpio_mr[i]);
-    }
-    memory_region_init_io(&p->pads_mr, OBJECT(p), &pruss_pads_ops, p,
-                          "am335x-pruss.pads", PADS_SIZE);
-    sysbus_init_mmio(sbd, &p->pads_mr);
-    memory_region_init_io(&p->port_mr, OBJECT(p), &pruss_port_ops, p,
-                          "am335x-pruss.port", PORT_SIZE);
-    sysbus_init_mmio(sbd, &p->port_mr);
-    memory_region_init_io(&p->prm_mr, OBJECT(p), &prm_ops, p,
-                          "am335x-pruss.prm-per", PRM_PER_SIZE);
-    sysbus_init_mmio(sbd, &p->prm_mr);
-    memory_region_init_io(&p->cm_mr, OBJECT(p), &pruss_cm_ops, p,
-                          "am335x-pruss.cm", CM_SIZE);
-    sysbus_init_mmio(sbd, &p->cm_mr);
-    memory_region_init_ram(&p->port_buf, OBJECT(p), "am335x-pruss.port-buf",
-                           PORT_BUF_SIZE, &err);
-    if (err) {
-        error_propagate(errp, err);
-        return;
-    }
-    p->buf = memory_region_get_ram_ptr(&p->port_buf);
-    sysbus_init_mmio(sbd, &p->port_buf);
-    for (i = 0; i < NUM_CATCH; i++) {
-        g_autofree char *name = g_strdup_printf("am335x-pruss.%s",
-                                                catch_regions[i].name);
-
-        memory_region_init_io(&p->catch_mr[i], OBJECT(p), &catch_ops,
-                              &p->catch_mr[i], name, catch_regions[i].size);
-        sysbus_init_mmio(sbd, &p->catch_mr[i]);
-    }
     for (i = 0; i < AM335X_PRUSS_NUM_HOST_IRQS; i++) {
         sysbus_init_irq(sbd, &p->host_irq[i]);
     }
-    for (i = 0; i < AM335X_PRUSS_NUM_GPIO_IRQS; i++) {
-        sysbus_init_irq(sbd, &p->gpio_irq[i]);
-    }
+    qdev_init_gpio_in_named(dev, pruss_lrst, "lrst", 1);
 
     p->s = g_malloc0(sizeof(*p->s));
     p->trace = g_new0(struct prusim_trace_rec, TRACE_LEN);
@@ -1260,6 +1164,7 @@ static void am335x_pruss_realize(DeviceState *dev, Error **errp)
     if (p->lockstep) {
         p->vtimer = timer_new_ns(QEMU_CLOCK_VIRTUAL, lockstep_timer, p);
     }
+    /* the rest comes with the system reset, before the guest runs */
     pruss_reset_state(p);
     p->vm_running = runstate_is_running();
     p->vmstate_entry = qemu_add_vm_change_state_handler(pruss_vm_state_change,
@@ -1287,9 +1192,6 @@ static void am335x_pruss_unrealize(DeviceState *dev)
     for (i = 0; i < PRUSIM_NUM_PORTS; i++) {
         pruss_stim_free(&p->input[i].stim);
     }
-    for (i = 0; i < PORT_HANDLES; i++) {
-        pruss_stage_free(&p->stage[i]);
-    }
     g_free(p->trace);
     g_free(p->s);
     g_rand_free(p->rng);
@@ -1313,6 +1215,17 @@ static Property am335x_pruss_props[] = {
                        ocp_write_delay_reset, 100),
     /* while the jitter knob is on: each DDR access up to this much longer */
     DEFINE_PROP_UINT32("ddr-jitter", AM335xPrussState, ddr_jitter_reset, 0),
+    /* the blocks the pin path reads */
+    DEFINE_PROP_LINK("gpio0", AM335xPrussState, gpio[0], TYPE_AM335X_GPIO,
+                     AM335xGpioState *),
+    DEFINE_PROP_LINK("gpio1", AM335xPrussState, gpio[1], TYPE_AM335X_GPIO,
+                     AM335xGpioState *),
+    DEFINE_PROP_LINK("gpio2", AM335xPrussState, gpio[2], TYPE_AM335X_GPIO,
+                     AM335xGpioState *),
+    DEFINE_PROP_LINK("gpio3", AM335xPrussState, gpio[3], TYPE_AM335X_GPIO,
+                     AM335xGpioState *),
+    DEFINE_PROP_LINK("pads", AM335xPrussState, pads, TYPE_AM335X_PADS,
+                     AM335xPadsState *),
     DEFINE_PROP_END_OF_LIST(),
 };
 
@@ -1332,7 +1245,7 @@ static void am335x_pruss_class_init(ObjectClass *klass, void *data)
     rc->phases.enter = am335x_pruss_reset_enter;
     rc->phases.hold = am335x_pruss_reset_hold;
     dc->vmsd = &vmstate_am335x_pruss;
-    dc->desc = "AM335x PRU-ICSS (prukit's prusim), GPIO banks and pads";
+    dc->desc = "AM335x PRU-ICSS (prukit's prusim)";
     dc->user_creatable = false;
     device_class_set_props(dc, am335x_pruss_props);
 }
@@ -1344,32 +1257,77 @@ static const TypeInfo am335x_pruss_info = {
     .class_init = am335x_pruss_class_init,
 };
 
+/*
+ * A new device, a child of the machine as @name: the links between the
+ * blocks name their targets by QOM path, which a device has only once it
+ * has a parent.
+ */
+static DeviceState *block_new(const char *type, const char *name)
+{
+    DeviceState *dev = qdev_new(type);
+
+    object_property_add_child(qdev_get_machine(), name, OBJECT(dev));
+    return dev;
+}
+
+static void link_set(DeviceState *dev, const char *name, DeviceState *target)
+{
+    object_property_set_link(OBJECT(dev), name, OBJECT(target), &error_abort);
+}
+
 DeviceState *am335x_pruss_create(qemu_irq *host_irq, qemu_irq *gpio_irq)
 {
-    DeviceState *dev = qdev_new(TYPE_AM335X_PRUSS);
-    SysBusDevice *sbd = SYS_BUS_DEVICE(dev);
-    unsigned int i, n = 0;
+    DeviceState *icss = block_new(TYPE_AM335X_PRUSS, "am335x-pruss");
+    DeviceState *gpio[PRUSIM_GPIO_BANKS], *pads, *prcm, *port;
+    unsigned int i;
 
-    sysbus_realize_and_unref(sbd, &error_fatal);
-    sysbus_mmio_map(sbd, n++, PRUSS_BASE);
+    /* the links first: the PRU-ICSS's reset reaches the banks and pads */
     for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
-        sysbus_mmio_map(sbd, n++, gpio_base[i]);
+        g_autofree char *name = g_strdup_printf("am335x-gpio%u", i);
+
+        gpio[i] = block_new(TYPE_AM335X_GPIO, name);
+        qdev_prop_set_uint8(gpio[i], "bank", i);
+        link_set(gpio[i], "pruss", icss);
+        link_set(icss, name + strlen("am335x-"), gpio[i]);
     }
-    sysbus_mmio_map(sbd, n++, PADS_BASE);
-    sysbus_mmio_map(sbd, n++, PORT_BASE);
-    sysbus_mmio_map(sbd, n++, PRM_PER_BASE);
-    sysbus_mmio_map(sbd, n++, CM_BASE);
-    sysbus_mmio_map(sbd, n++, PORT_BUF_BASE);
-    for (i = 0; i < NUM_CATCH; i++) {
-        sysbus_mmio_map_overlap(sbd, n++, catch_regions[i].base, -1000);
-    }
+    pads = block_new(TYPE_AM335X_PADS, "am335x-pads");
+    link_set(pads, "pruss", icss);
+    link_set(icss, "pads", pads);
+    prcm = block_new(TYPE_AM335X_PRCM, "am335x-prcm");
+    link_set(prcm, "pruss", icss);
+    port = block_new(TYPE_AM335X_PRUSS_PORT, "am335x-pruss-port");
+    link_set(port, "pruss", icss);
+
+    sysbus_realize_and_unref(SYS_BUS_DEVICE(icss), &error_fatal);
+    sysbus_mmio_map(SYS_BUS_DEVICE(icss), 0, PRUSS_BASE);
     for (i = 0; i < AM335X_PRUSS_NUM_HOST_IRQS; i++) {
-        sysbus_connect_irq(sbd, i, host_irq[i]);
+        sysbus_connect_irq(SYS_BUS_DEVICE(icss), i, host_irq[i]);
     }
-    for (i = 0; i < AM335X_PRUSS_NUM_GPIO_IRQS; i++) {
-        sysbus_connect_irq(sbd, AM335X_PRUSS_NUM_HOST_IRQS + i, gpio_irq[i]);
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        sysbus_realize_and_unref(SYS_BUS_DEVICE(gpio[i]), &error_fatal);
+        sysbus_mmio_map(SYS_BUS_DEVICE(gpio[i]), 0, gpio_base[i]);
+        sysbus_connect_irq(SYS_BUS_DEVICE(gpio[i]), 0, gpio_irq[i]);
     }
-    return dev;
+    sysbus_realize_and_unref(SYS_BUS_DEVICE(pads), &error_fatal);
+    sysbus_mmio_map(SYS_BUS_DEVICE(pads), 0, PADS_BASE);
+    sysbus_realize_and_unref(SYS_BUS_DEVICE(prcm), &error_fatal);
+    sysbus_mmio_map(SYS_BUS_DEVICE(prcm), 0, PRM_PER_BASE);
+    sysbus_mmio_map(SYS_BUS_DEVICE(prcm), 1, CM_BASE);
+    qdev_connect_gpio_out_named(prcm, "icss-lrst", 0,
+                                qdev_get_gpio_in_named(icss, "lrst", 0));
+    for (i = 0; i < PRUSIM_GPIO_BANKS; i++) {
+        qdev_connect_gpio_out_named(prcm, "gpio-clk", i,
+                                    qdev_get_gpio_in_named(gpio[i], "clk", 0));
+    }
+    sysbus_realize_and_unref(SYS_BUS_DEVICE(port), &error_fatal);
+    sysbus_mmio_map(SYS_BUS_DEVICE(port), 0, PORT_BASE);
+    sysbus_mmio_map(SYS_BUS_DEVICE(port), 1, PORT_BUF_BASE);
+    for (i = 0; i < ARRAY_SIZE(catch_regions); i++) {
+        create_unimplemented_device(catch_regions[i].name,
+                                    catch_regions[i].base,
+                                    catch_regions[i].size);
+    }
+    return icss;
 }
 
 static void am335x_pruss_register_types(void)

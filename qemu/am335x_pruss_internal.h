@@ -1,16 +1,30 @@
 /* SPDX-License-Identifier: GPL-2.0-only */
 /*
- * AM335x PRU-ICSS for prukit's test VM: the device's state and what its
- * parts share (am335x_pruss.c: the PRU-ICSS, its interrupts and the
- * simulation thread; am335x_pruss_pins.c: the pins, GPIO banks (and their
- * clocks) and pads; am335x_pruss_port.c: the test port).  Private to
- * hw/misc/am335x_pruss*.c.
+ * AM335x PRU-ICSS for prukit's test VM: the devices' state and what they
+ * share.  One QOM device per block (am335x_pruss_create() makes and wires
+ * them):
+ *   am335x_pruss.c       TYPE_AM335X_PRUSS: the PRU-ICSS, its interrupts
+ *                        and the simulation (thread or lockstep)
+ *   am335x_pruss_pins.c  the pin path: what R30, a GPIO line or a pad
+ *                        makes of a pin (a model, not a device)
+ *   am335x_pruss_gpio.c  TYPE_AM335X_GPIO: a GPIO bank
+ *   am335x_pruss_pads.c  TYPE_AM335X_PADS: the control module's pads
+ *   am335x_pruss_prcm.c  TYPE_AM335X_PRCM: PRM_PER's PRU-ICSS reset and
+ *                        the GPIO banks' CLKCTRL in CM_PER/CM_WKUP
+ *   am335x_pruss_port.c  TYPE_AM335X_PRUSS_PORT: prukit's test port
+ * The PRU reaches the GPIO banks through the simulator, whose data path
+ * for them (OE, DATAOUT, DATAIN) is the simulator's own: so the GPIO
+ * banks, the pads and the test port hold a link to the PRU-ICSS and take
+ * its lock, the one lock of the whole pin path.  PRCM drives the PRU-ICSS's
+ * local reset and the banks' clocks through GPIO lines, as PRCM's outputs
+ * on the SoC.  Private to hw/misc/am335x_pruss*.c.
  */
 #ifndef HW_MISC_AM335X_PRUSS_INTERNAL_H
 #define HW_MISC_AM335X_PRUSS_INTERNAL_H
 
 #include "exec/memory.h"
 #include "hw/sysbus.h"
+#include "qemu/bswap.h"
 #include "qemu/thread.h"
 #include "qemu/timer.h"
 #include "qom/object.h"
@@ -23,6 +37,10 @@
 #include "prusim/prusim_trace.h"
 
 OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
+OBJECT_DECLARE_SIMPLE_TYPE(AM335xGpioState, AM335X_GPIO)
+OBJECT_DECLARE_SIMPLE_TYPE(AM335xPadsState, AM335X_PADS)
+OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrcmState, AM335X_PRCM)
+OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussPortState, AM335X_PRUSS_PORT)
 
 /* The AM335x memory map (SPRUH73 chapter 2) */
 #define PRUSS_BASE              0x4a300000
@@ -43,8 +61,6 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 #define CM_IDLEST               (0x3u << CM_IDLEST_SHIFT)
 #define CM_IDLEST_DISABLED      0x3
 #define CM_GPIO_OPTFCLKEN       (1u << 18)      /* the debounce clock */
-
-#define NUM_CATCH               3       /* catch_regions[] */
 
 /* prukit's test port: registers, and a buffer both sides read and write */
 #define PORT_BASE               0x5f000000
@@ -73,7 +89,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(AM335xPrussState, AM335X_PRUSS)
 #define GPIO_DEBOUNCENABLE      0x150
 #define GPIO_DEBOUNCINGTIME     0x154
 #define GPIO_REVISION_VALUE     0x50600801
-#define GPIO_NUM_STORED         (0x160 / 4)
+#define GPIO_REGS_SIZE          0x160   /* registers stored: 0x000..0x15c */
 
 /* PRU-ICSS offsets the device itself looks at */
 #define ICSS_INTC               0x20000
@@ -135,20 +151,109 @@ typedef struct PrussStage {
     size_t checked;
 } PrussStage;
 
+/**
+ * struct AM335xGpioState - a GPIO bank (gpio-omap's view of it)
+ * @bank: which (0..3): the simulator's bank the PRU reaches over OCP
+ * @pruss: the PRU-ICSS whose simulator holds OE, DATAOUT and DATAIN
+ * @regs: the other registers, as the bus sees them (ldl_le_p/stl_le_p)
+ * @clocked: PRCM clocks it (its "clk" input, from its CLKCTRL)
+ * @clock_gatings: how often PRCM stopped its clock
+ * @out: DATAOUT as it lands (from the simulator's pin callbacks)
+ * @oe: OE as it lands
+ * @shown: what its pads show
+ * @unpinned_seen: lines a store reached no pin with
+ *
+ * Everything but @mr, @irq, @bank and @pruss is under the PRU-ICSS's lock.
+ */
+struct AM335xGpioState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion mr;
+    qemu_irq irq;                   /* never raised: not modelled */
+    uint8_t bank;
+    AM335xPrussState *pruss;
+
+    uint8_t regs[GPIO_REGS_SIZE];
+    bool clocked;
+    uint64_t clock_gatings;
+    uint32_t out;
+    uint32_t oe;
+    uint32_t shown;
+    uint32_t unpinned_seen;
+};
+
+/**
+ * struct AM335xPadsState - the control module's pad registers (conf_*)
+ * @regs: each pad's register, as the bus sees them (ldl_le_p/stl_le_p)
+ * @writes: how many were written
+ *
+ * Under the PRU-ICSS's lock: a pad decides what reaches a pin.
+ */
+struct AM335xPadsState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion mr;
+    AM335xPrussState *pruss;
+
+    uint8_t regs[PADS_SIZE];
+    uint64_t writes;
+};
+
+/**
+ * struct AM335xPrcmState - the parts of PRCM the PRU-ICSS's world uses
+ * @rstctrl: RM_PER_RSTCTRL: PRU_ICSS_LRST drives @icss_lrst
+ * @gpio_clkctrl: each GPIO bank's CLKCTRL: MODULEMODE drives @gpio_clk
+ *
+ * MMIO under the BQL only; the lines' receivers take their own locks.
+ */
+struct AM335xPrcmState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion prm_mr;
+    MemoryRegion cm_mr;
+    qemu_irq icss_lrst;
+    qemu_irq gpio_clk[PRUSIM_GPIO_BANKS];
+    AM335xPrussState *pruss;        /* where an unmodelled access is logged */
+
+    uint32_t rstctrl;
+    uint32_t gpio_clkctrl[PRUSIM_GPIO_BANKS];
+};
+
+/**
+ * struct AM335xPrussPortState - prukit's test port
+ * @buf: @buf_mr's memory: the text or trace both sides read and write
+ * @status: the last command's status (a positive errno)
+ * @len: the length of what was written, then of the reply
+ * @handle: the handle OPEN gave
+ * @stage: input stimulus being written, per handle
+ */
+struct AM335xPrussPortState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion mr;
+    MemoryRegion buf_mr;
+    AM335xPrussState *pruss;
+
+    uint8_t *buf;
+    uint32_t status;                /* under the BQL */
+    uint32_t len;
+    uint32_t handle;
+    PrussStage stage[PORT_HANDLES]; /* under the PRU-ICSS's lock */
+};
+
+/**
+ * struct AM335xPrussState - the PRU-ICSS, and the pin path it drives
+ *
+ * @gpio, @pads: the blocks the pin path reads (links set by
+ * am335x_pruss_create()).
+ */
 struct AM335xPrussState {
     SysBusDevice parent_obj;
 
     MemoryRegion pruss_mr;
-    MemoryRegion gpio_mr[PRUSIM_GPIO_BANKS];
-    MemoryRegion pads_mr;
-    MemoryRegion port_mr;
-    MemoryRegion port_buf;
-    MemoryRegion prm_mr;
-    MemoryRegion cm_mr;
-    MemoryRegion catch_mr[NUM_CATCH];
     qemu_irq host_irq[AM335X_PRUSS_NUM_HOST_IRQS];
-    qemu_irq gpio_irq[AM335X_PRUSS_NUM_GPIO_IRQS];
-    uint8_t *buf;                   /* port_buf's memory */
+    AM335xGpioState *gpio[PRUSIM_GPIO_BANKS];
+    AM335xPadsState *pads;
 
     /* properties */
     uint32_t slice_cycles;
@@ -160,9 +265,6 @@ struct AM335xPrussState {
 
     /* Under the BQL */
     bool host_level[AM335X_PRUSS_NUM_HOST_IRQS];
-    uint32_t port_status;
-    uint32_t port_len;
-    uint32_t port_handle;
 
     QemuThread thread;              /* the simulation's, unless lockstep */
     QemuMutex lock;                 /* everything below; after the BQL */
@@ -203,40 +305,26 @@ struct AM335xPrussState {
     uint64_t trace_until;
     bool trace_first;           /* keep the first records, not the last */
 
-    /* pads */
-    uint32_t pad[PADS_NUM];
+    /* the pin path (am335x_pruss_pins.c) */
     uint64_t r30;                   /* every PRU output's level */
     uint64_t r30_shown;             /* what its pads show */
     uint64_t unmuxed_writes;
     uint64_t unmuxed_seen;          /* outputs written while unmuxed */
-    uint64_t pad_writes;
     /* what reaches a pin, from the pads (pruss_pads_changed()) */
     uint64_t r30_pad_mask;          /* R30 bits on a pad in their mode */
     uint32_t r31_pad_mask[PRUSIM_NUM_CORES]; /* R31 bits a pad feeds */
     uint32_t gpio_pad_mask[PRUSIM_GPIO_BANKS]; /* lines on a pad in mode 7 */
     uint32_t gpio_in_mask[PRUSIM_GPIO_BANKS];  /* ... with its receiver on */
-    /* GPIO lines: DATAOUT and OE as they land, what the pads show */
-    uint32_t gpio_out[PRUSIM_GPIO_BANKS];
-    uint32_t gpio_oe[PRUSIM_GPIO_BANKS];
-    uint32_t gpio_shown[PRUSIM_GPIO_BANKS];
-    uint32_t gpio_unmuxed_seen[PRUSIM_GPIO_BANKS];
     uint64_t gpio_unpinned;         /* GPIO output stores that reached no pin */
     uint64_t gpio_gated;            /* ... of them, to a bank gpio-omap gated */
     bool arm_gpio;                  /* in an ARM store to a GPIO bank */
 
-    /* PRCM: RM_PER_RSTCTRL, and how often it reset the PRU-ICSS */
-    uint32_t prm_rstctrl;
+    /* PRCM's PRU_ICSS_LRST (the "lrst" input), how often it reset us */
+    bool in_lrst;
     uint64_t icss_resets;
     uint8_t reset_states[PRUSIM_NUM_CORES]; /* the cores' as it came */
-    /* PRCM: the GPIO banks' CLKCTRL (MODULEMODE, OPTFCLKEN), clock gatings */
-    uint32_t gpio_clkctrl[PRUSIM_GPIO_BANKS];
-    uint64_t gpio_clock_gatings;
-
-    /* GPIO registers the simulator does not keep */
-    uint32_t gpio_reg[PRUSIM_GPIO_BANKS][GPIO_NUM_STORED];
 
     PrussInput input[PRUSIM_NUM_PORTS];
-    PrussStage stage[PORT_HANDLES];
 
     /* interrupt hold (emulation policy, see am335x_pruss.c) */
     uint64_t taken;         /* events the ARM read from HIPIR */
@@ -286,7 +374,18 @@ static inline int64_t pruss_now_ns(AM335xPrussState *p)
 /* PRCM holds the PRU-ICSS in its local reset */
 static inline bool pruss_icss_in_reset(AM335xPrussState *p)
 {
-    return p->prm_rstctrl & PRM_ICSS_LRST;
+    return p->in_lrst;
+}
+
+/* A GPIO bank's register, as stored (@off 4-aligned, below GPIO_REGS_SIZE) */
+static inline uint32_t gpio_reg(AM335xGpioState *g, hwaddr off)
+{
+    return ldl_le_p(&g->regs[off]);
+}
+
+static inline void gpio_reg_set(AM335xGpioState *g, hwaddr off, uint32_t v)
+{
+    stl_le_p(&g->regs[off], v);
 }
 
 /*
@@ -297,7 +396,7 @@ static inline bool pruss_icss_in_reset(AM335xPrussState *p)
  */
 static inline bool pruss_gpio_clocked(AM335xPrussState *p, unsigned int bank)
 {
-    return (p->gpio_clkctrl[bank] & CM_MODULEMODE) == CM_MODULEMODE_ENABLE;
+    return p->gpio[bank]->clocked;
 }
 
 /*
@@ -309,7 +408,13 @@ static inline bool pruss_gpio_clocked(AM335xPrussState *p, unsigned int bank)
 static inline bool pruss_gpio_gated(AM335xPrussState *p, unsigned int bank)
 {
     return !pruss_gpio_clocked(p, bank) ||
-           (p->gpio_reg[bank][GPIO_CTRL / 4] & GPIO_CTRL_DISABLEMODULE);
+           (gpio_reg(p->gpio[bank], GPIO_CTRL) & GPIO_CTRL_DISABLEMODULE);
+}
+
+/* A pad's register (@i: its index from conf_* 0x800) */
+static inline uint32_t pad_reg(AM335xPadsState *pads, unsigned int i)
+{
+    return ldl_le_p(&pads->regs[4 * i]);
 }
 
 /* am335x_pruss.c */
@@ -326,29 +431,26 @@ uint32_t pruss_icss_read32(AM335xPrussState *p, uint32_t off);
 uint32_t pruss_iep_count(AM335xPrussState *p);
 void pruss_stim_free(struct prusim_stim *st);
 
-/* am335x_pruss_pins.c: the pins, GPIO banks (and their clocks) and pads */
+/* am335x_pruss_pins.c: the pin path (under the PRU-ICSS's lock) */
 
 /* Recompute what reaches a pin from the pad registers (reset) */
 void pruss_pads_masks(AM335xPrussState *p);
 /* ... and show the pins' levels that changed with them */
 void pruss_pads_changed(AM335xPrussState *p);
+/* Show a GPIO bank's lines on their pins as they are now */
+void pruss_gpio_show(AM335xPrussState *p, unsigned int bank);
 /* prusim_ops: a PRU output or GPIO line changed; a bank's OE changed */
 void pruss_pin_cb(void *ctx, u64 cycle, unsigned int pin, bool level);
 void pruss_gpio_oe_cb(void *ctx, u64 cycle, unsigned int bank, u32 oe);
-/* The test port's "pads" file, in the reply buffer; its length */
-uint32_t pruss_pads_text(AM335xPrussState *p);
-extern const MemoryRegionOps pruss_gpio_ops[PRUSIM_GPIO_BANKS];
-extern const MemoryRegionOps pruss_cm_ops;
-extern const MemoryRegionOps pruss_pads_ops;
 
-/* am335x_pruss_port.c: the test port */
+/* am335x_pruss_pads.c */
 
-/* Append to the reply being built at *@len (in the port's buffer) */
-void G_GNUC_PRINTF(3, 4) port_add(AM335xPrussState *p, uint32_t *len,
-                                  const char *fmt, ...);
+/* Set pad @i as a pad register write does (lock held) */
+void am335x_pads_set(AM335xPadsState *pads, unsigned int i, uint32_t val);
+
+/* am335x_pruss_port.c */
+
 /* The jitter knob's generator, from its seed (p->jitter) */
 void pruss_jitter_seed(AM335xPrussState *p);
-void pruss_stage_free(PrussStage *st);
-extern const MemoryRegionOps pruss_port_ops;
 
 #endif /* HW_MISC_AM335X_PRUSS_INTERNAL_H */

@@ -48,7 +48,9 @@ prusim_check() {
 # The QEMU of the VM's board path: Debian's 7.2 with prukit's PRU-ICSS
 # (scripts/qemu-build.sh; about 10 CPU minutes cold, then cached), and
 # with qemu/arm-dacr.patch: a bare-metal program checks that loads, stores
-# and fetches still fault exactly as DACR says (tests/qemu/dacr).
+# and fetches still fault exactly as DACR says (tests/qemu/dacr); and the
+# AM335x blocks as QEMU's monitor sees them: one device per block, at its
+# address, out of reset (tests/qemu/blocks).
 qemu_check() {
 	local bin rc=0
 	bin=$(scripts/qemu-build.sh) || { echo "FAIL: scripts/qemu-build.sh"; return 1; }
@@ -60,19 +62,20 @@ qemu_check() {
 	fi
 	need_pkgs gcc-arm-linux-gnueabihf
 	tests/qemu/dacr/run.sh "$bin" out/tests/qemu-dacr || rc=1
+	tests/qemu/blocks/run.sh "$bin" out/tests/qemu-blocks || rc=1
 	return $rc
 }
 
 # step NAME MIN COMMAND: MIN is the fewest checks (PASS: and FAIL: lines) the
 # step must run, a little below what a clean clone gives (in brackets; they
 # only grow as tests are added).  The harness checks itself first.
-step harness 60 harness_check				# [65]
+step harness 60 harness_check				# [67]
 step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
 # Debian's three kernels as shipped and as a board's (with the kernel's
 # own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU
 # drivers (Documentation/kernels.rst)
 step kernels 31 scripts/kernels.sh 5.10 6.1 6.12 5.10-ti 6.12-ti	# [33]
-step qemu 36 qemu_check					# [39]
+step qemu 70 qemu_check					# [75]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti

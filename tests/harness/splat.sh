@@ -61,6 +61,10 @@ expect "a hung task in the guest's dmesg is a splat" 1 \
 	"$clean_boot" "[  250.000000] INFO: task modprobe:312 blocked for more than 122 seconds."
 expect "a line the PRU-ICSS model logged fails the check" 1 \
 	"$clean_boot" "" "am335x-pruss: PRU0 stopped by the simulator: illegal opcode at 0x0040"
+expect "an access to the unmodelled rest of L4 (an unimplemented device) fails the check" 1 \
+	"$clean_boot" "" "am335x.l4_per: unimplemented device read  (size 4, offset 0x04c13c)"
+expect "... a line of vexpress's own devices does not" 0 \
+	"$clean_boot" "" "arm_sysctl_read: Bad register offset 0xa8"
 gated='am335x-pruss: PRU0 stopped at pc 0x60: OCP read of GPIO bank 1 at 0x4804c134 while its clocks are gated'
 expect "the model's lines a test expects, as many times as it says, are clean" 0 \
 	"$clean_boot" "" "$gated
