@@ -49,8 +49,9 @@ prusim_check() {
 # (scripts/qemu-build.sh; about 10 CPU minutes cold, then cached), and
 # with qemu/arm-dacr.patch: a bare-metal program checks that loads, stores
 # and fetches still fault exactly as DACR says (tests/qemu/dacr); and the
-# AM335x blocks as QEMU's monitor sees them: one device per block, at its
-# address, out of reset (tests/qemu/blocks).
+# AM335x blocks as QEMU's monitor sees them (one device per block, at its
+# address, out of reset) and as its qtest protocol drives them (PRCM's
+# lines to the PRU-ICSS and the GPIO banks): tests/qemu/blocks.
 qemu_check() {
 	local bin rc=0
 	bin=$(scripts/qemu-build.sh) || { echo "FAIL: scripts/qemu-build.sh"; return 1; }
@@ -75,7 +76,7 @@ step checkpatch 125 scripts/checkpatch.sh		# [131], one per C file
 # own PRU drivers), BeagleBoard's 5.10-ti and Debian's 6.12 with TI's PRU
 # drivers (Documentation/kernels.rst)
 step kernels 31 scripts/kernels.sh 5.10 6.1 6.12 5.10-ti 6.12-ti	# [33]
-step qemu 70 qemu_check					# [75]
+step qemu 95 qemu_check					# [101]
 step firmware 185 firmware_check				# [193], grows with the images
 step overlays 950 scripts/overlays.sh --check		# [978]
 step dkms 32 scripts/dkms-test.sh			# [35]: 5.10 (no rpmsg_pru: no CONFIG_RPMSG), 6.1, 6.12, 5.10-ti

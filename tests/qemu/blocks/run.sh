@@ -24,6 +24,19 @@
 #               device
 #   system_reset  the same values after a reset of the machine
 #
+# Then QEMU's qtest protocol (-accel qtest: reads and writes through the
+# bus, no CPU) drives what the lines between the blocks carry:
+#   lrst        releasing PRU_ICSS_LRST in RM_PER_RSTCTRL lets the PRU-ICSS
+#               answer (PRU0's CONTROL reads its reset value), its RAM
+#               takes a word and gives it back, also as a narrower read and
+#               after a narrower write (little-endian bytes), and asserting
+#               the reset again clears the RAM
+#   clk         enabling GPIO1's MODULEMODE in its CLKCTRL clocks the bank
+#               (REVISION reads, OE takes a value); disabling it gates the
+#               bank (IDLEST disabled, an access is an unmodelled one) and
+#               the bank keeps its registers until it is clocked again
+#   pads        a pad register keeps its low 7 bits
+#
 # One PASS:/FAIL: line per check; exit status 1 if one failed.
 set -uo pipefail
 bin=${1:?usage: run.sh QEMU [OUTDIR]}
@@ -143,6 +156,110 @@ want_log "reset: a read of the PRU-ICSS in reset is an unmodelled access" \
 	"am335x-pruss: PRU-ICSS read of 4 bytes at 0x00000 while PRCM holds it in reset"
 want_log "l4: the unimplemented device logs a read of L4_PER" \
 	"am335x.l4_per: unimplemented device read  (size 4, offset 0x0c0000)"
+# qtest: "COMMAND|REPLY" (a read's reply is its value)
+steps=(
+	"readl 0x44e00c00|0x2"
+	"writel 0x44e00c00 0x0|"
+	"readl 0x4a322000|0x1"
+	"writel 0x4a300000 0x12345678|"
+	"readl 0x4a300000|0x12345678"
+	"readw 0x4a300002|0x1234"
+	"writeb 0x4a300001 0xab|"
+	"readl 0x4a300000|0x1234ab78"
+	"writel 0x44e00c00 0x2|"
+	"writel 0x44e00c00 0x0|"
+	"readl 0x4a300000|0x0"
+	"writel 0x44e000ac 0x2|"
+	"readl 0x44e000ac|0x2"
+	"readl 0x4804c000|0x50600801"
+	"readl 0x4804c134|0xffffffff"
+	"writel 0x4804c134 0xfffffffe|"
+	"readl 0x4804c134|0xfffffffe"
+	"writel 0x44e000ac 0x0|"
+	"readl 0x44e000ac|0x30000"
+	"readl 0x4804c134|0x0"
+	"writel 0x44e000ac 0x2|"
+	"readl 0x4804c134|0xfffffffe"
+	"writel 0x44e10800 0xff|"
+	"readl 0x44e10800|0x7f"
+)
+what=(
+	"lrst: RM_PER_RSTCTRL holds the PRU-ICSS in reset"
+	"lrst: release it"
+	"lrst: released, PRU0 CONTROL reads its reset value"
+	"lrst: a word into PRU0's data RAM"
+	"lrst: ... reads back"
+	"lrst: ... its upper half as a 16-bit read"
+	"lrst: a byte into it"
+	"lrst: ... lands in the word, little-endian"
+	"lrst: assert the reset again"
+	"lrst: and release it"
+	"lrst: the reset cleared the RAM"
+	"clk: enable GPIO1's MODULEMODE"
+	"clk: CLKCTRL reads enabled (IDLEST functional)"
+	"clk: the clocked bank's REVISION"
+	"clk: its OE (every line an input)"
+	"clk: make line 0 an output"
+	"clk: OE reads back"
+	"clk: disable MODULEMODE"
+	"clk: CLKCTRL reads IDLEST disabled"
+	"clk: a gated bank reads 0"
+	"clk: enable it again"
+	"clk: the bank kept its OE while gated"
+	"pads: write 0xff to conf_gpmc_ad0"
+	"pads: it keeps the low 7 bits"
+)
+printf '%s\n' "${steps[@]%%|*}" >"$out/qtest.in"
+rm -f "$out/qtest.log" "$out/qtest.out"
+# qtest has no quit: QEMU runs until every command has its reply (or 60 s)
+"$bin" -M vexpress-a15,pruss=on -accel qtest -qtest stdio -qtest-log none \
+	-nodefaults -display none -d unimp -D "$out/qtest.log" \
+	<"$out/qtest.in" >"$out/qtest.out" 2>"$out/qtest.err" &
+qpid=$!
+replied() {
+	local n
+	n=$(grep -cE '^(OK|ERR|FAIL)' "$out/qtest.out" 2>/dev/null)
+	echo "${n:-0}"
+}
+deadline=$((SECONDS + 60))
+while [ "$(replied)" -lt ${#steps[@]} ] && kill -0 $qpid 2>/dev/null &&
+	[ $SECONDS -lt $deadline ]; do
+	sleep 0.1
+done
+if ! kill -0 $qpid 2>/dev/null; then
+	tail -n 20 "$out/qtest.err" | sed 's/^/    /'
+	fail "$bin -accel qtest exited before it answered ($(replied) of ${#steps[@]} replies, $out/qtest.err)"
+fi
+kill $qpid 2>/dev/null
+wait $qpid 2>/dev/null
+mapfile -t replies < <(tr -d '\r' <"$out/qtest.out" | grep -E '^(OK|ERR|FAIL)')
+for i in "${!steps[@]}"; do
+	want=OK
+	val=${steps[$i]#*|}
+	[ -z "$val" ] || want=$(printf 'OK 0x%016x' "$val")
+	if [ "${replies[$i]:-}" = "$want" ]; then
+		pass "${what[$i]}: ${steps[$i]%%|*}${val:+ = $val}"
+	else
+		fail "${what[$i]}: ${steps[$i]%%|*}: \"${replies[$i]:-no reply}\", \"$want\" expected"
+	fi
+done
+want_qlog() {
+	if grep -qF -- "$2" "$out/qtest.log"; then
+		pass "$1"
+	else
+		fail "$1: no line \"$2\" in $out/qtest.log"
+	fi
+}
+want_qlog "clk: the read of the gated bank is an unmodelled access" \
+	"am335x-pruss: GPIO1 read at 0x134 while PRCM gates its clocks"
+n=$(grep -c '^am335x' "$out/qtest.log")
+if [ "$n" -eq 1 ]; then
+	pass "qtest: the model logged that line and no other"
+else
+	grep '^am335x' "$out/qtest.log" | head -n 10 | sed 's/^/    /'
+	fail "qtest: the model logged $n lines, 1 expected"
+fi
+
 n=$(grep -c '^am335x' "$out/qemu.log")
 if [ "$n" -eq 3 ]; then
 	pass "the model logged those 3 lines and no other"
