@@ -804,6 +804,9 @@ while line and "listening" not in line:
 try:
     with socket.create_connection(("::1", port6), timeout=5) as c6:
         c6.sendall(ps.opc_message(1, bytes([6]) * 12))
+    # the frame written before the next one comes: frames for one output
+    # that arrive together are merged into the newest (a frame that waits)
+    wait_for(lambda: len(frames("six", 12)) >= 1)
     OpcClient4 = ps.OpcClient(port=port6, udp=True)
     OpcClient4.put_pixels(1, bytes([4]) * 12)
     OpcClient4.close()
