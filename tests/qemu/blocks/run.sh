@@ -143,19 +143,33 @@ want_read 8 44e000ac 0x00030000 "system_reset: GPIO1_CLKCTRL"
 want_read 9 44e10800 0x00000027 "system_reset: conf_gpmc_ad0"
 want_read 10 5f000000 0x4d535250 "system_reset: the test port's ID"
 
+# want_log LOG WHAT TEXT: LOG (QEMU's -D file) has a line with TEXT
 want_log() {
-	if grep -qF -- "$2" "$out/qemu.log"; then
-		pass "$1"
+	if grep -qF -- "$3" "$1"; then
+		pass "$2"
 	else
-		fail "$1: no line \"$2\" in $out/qemu.log"
+		fail "$2: no line \"$3\" in $1"
 	fi
 }
-want_log "reset: a read of a gated GPIO bank is an unmodelled access" \
+# log_lines LOG N WHAT: the model's lines in LOG are N, no more
+log_lines() {
+	local n
+	n=$(grep -c '^am335x' "$1")
+	if [ "$n" -eq "$2" ]; then
+		pass "$3"
+	else
+		grep '^am335x' "$1" | head -n 10 | sed 's/^/    /'
+		fail "${3%%:*}: the model logged $n lines, $2 expected"
+	fi
+}
+want_log "$out/qemu.log" "reset: a read of a gated GPIO bank is an unmodelled access" \
 	"am335x-pruss: GPIO1 read at 0x000 while PRCM gates its clocks"
-want_log "reset: a read of the PRU-ICSS in reset is an unmodelled access" \
+want_log "$out/qemu.log" "reset: a read of the PRU-ICSS in reset is an unmodelled access" \
 	"am335x-pruss: PRU-ICSS read of 4 bytes at 0x00000 while PRCM holds it in reset"
-want_log "l4: the unimplemented device logs a read of L4_PER" \
+want_log "$out/qemu.log" "l4: the unimplemented device logs a read of L4_PER" \
 	"am335x.l4_per: unimplemented device read  (size 4, offset 0x0c0000)"
+log_lines "$out/qemu.log" 3 "monitor: the model logged those 3 lines and no other"
+
 # qtest: "COMMAND|REPLY" (a read's reply is its value)
 steps=(
 	"readl 0x44e00c00|0x2"
@@ -243,28 +257,7 @@ for i in "${!steps[@]}"; do
 		fail "${what[$i]}: ${steps[$i]%%|*}: \"${replies[$i]:-no reply}\", \"$want\" expected"
 	fi
 done
-want_qlog() {
-	if grep -qF -- "$2" "$out/qtest.log"; then
-		pass "$1"
-	else
-		fail "$1: no line \"$2\" in $out/qtest.log"
-	fi
-}
-want_qlog "clk: the read of the gated bank is an unmodelled access" \
+want_log "$out/qtest.log" "clk: the read of the gated bank is an unmodelled access" \
 	"am335x-pruss: GPIO1 read at 0x134 while PRCM gates its clocks"
-n=$(grep -c '^am335x' "$out/qtest.log")
-if [ "$n" -eq 1 ]; then
-	pass "qtest: the model logged that line and no other"
-else
-	grep '^am335x' "$out/qtest.log" | head -n 10 | sed 's/^/    /'
-	fail "qtest: the model logged $n lines, 1 expected"
-fi
-
-n=$(grep -c '^am335x' "$out/qemu.log")
-if [ "$n" -eq 3 ]; then
-	pass "the model logged those 3 lines and no other"
-else
-	grep '^am335x' "$out/qemu.log" | head -n 10 | sed 's/^/    /'
-	fail "the model logged $n lines, 3 expected"
-fi
+log_lines "$out/qtest.log" 1 "qtest: the model logged that line and no other"
 exit $bad
